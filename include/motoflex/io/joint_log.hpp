@@ -1,0 +1,98 @@
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace motoflex {
+
+// A joint log is a CSV file plus a sidecar YAML next to it with the same stem
+// (walk.csv → walk.yaml).
+//
+// CSV: a UTF-8 byte order mark, '#' comment lines and blank lines (anywhere) are ignored; the
+// first other line is the header: `time_s` first, then any of `<joint>.cmd` (commanded angle,
+// rad), `<joint>.meas` (measured angle, rad), `imu.roll`, `imu.pitch` (rad), in any order;
+// joints are numbered in the order their first column appears. Each following line is one
+// frame of comma-separated numbers (spaces around fields are allowed); time must strictly
+// increase; all values are finite. Either every joint has a .cmd column or none has, and the
+// same for .meas.
+//
+// Sidecar keys: robot (string, required), rate_hz (number > 0, required), motion (string),
+// units (only "rad"), origin (string, e.g. "motoflex record truth=..." or "imported from BAM
+// file X"), parameters (mapping name → number: values the model should use for this log, e.g.
+// bench.mass_kg), notes (string). Other keys are errors.
+
+struct JointLogMeta {
+  std::string robot;                         // robot name, e.g. "nao"
+  double rate_hz = 0.0;                      // nominal frame rate; 0 when there is no sidecar
+  std::string motion;                        // what the robot did, free text
+  std::string units = "rad";                 // angle unit of the CSV; only "rad" is supported
+  std::string origin;                        // how the log came to be (recorded, imported, ...)
+  std::map<std::string, double> parameters;  // per-log model parameters, e.g. bench.mass_kg
+  std::string notes;                         // free text
+};
+
+struct JointLog {
+  std::vector<std::string> joint_names;  // column order of first appearance
+  std::vector<double> time_s;            // one per frame, strictly increasing
+  // Frame-major [frame * joints() + joint]; empty when the log has no .cmd columns.
+  std::vector<double> commanded_rad;
+  // Frame-major like commanded_rad; empty when the log has no .meas columns.
+  std::vector<double> measured_rad;
+  std::vector<double> imu_roll_rad;   // one per frame; empty when absent
+  std::vector<double> imu_pitch_rad;  // one per frame; empty when absent
+  JointLogMeta meta;
+
+  std::size_t frames() const { return time_s.size(); }
+  std::size_t joints() const { return joint_names.size(); }
+  bool has_commanded() const { return !commanded_rad.empty(); }
+  bool has_measured() const { return !measured_rad.empty(); }
+  // Unchecked: frame < frames(), joint < joints(), and the matching has_*() is true.
+  double commanded(std::size_t frame, std::size_t joint) const {
+    return commanded_rad[frame * joints() + joint];
+  }
+  double measured(std::size_t frame, std::size_t joint) const {
+    return measured_rad[frame * joints() + joint];
+  }
+  // Index of the joint called `name`, if the log has it.
+  std::optional<std::size_t> joint_index(std::string_view name) const {
+    for (std::size_t i = 0; i < joint_names.size(); ++i) {
+      if (joint_names[i] == name) return i;
+    }
+    return std::nullopt;
+  }
+};
+
+// What the caller needs from a log; anything missing is an InputError at read time rather than
+// a surprise later.
+struct JointLogRequirements {
+  bool need_commanded = true;  // every joint must have a .cmd column
+  bool need_measured = false;  // every joint must have a .meas column
+  bool need_sidecar = false;   // the sidecar YAML must exist (it is always validated if present)
+  // If non-empty, each of these joints must be in the log (with .cmd when need_commanded and
+  // .meas when need_measured). The log keeps all its joints, in its own order.
+  std::vector<std::string> joints;
+};
+
+// The sidecar path for a CSV path: the same path with the extension replaced by ".yaml".
+std::string joint_log_sidecar_path(const std::string& csv_path);
+
+// Reads a joint log and its sidecar (if present). Every problem with the files throws
+// InputError naming the file, the line and the column or key: missing or empty file, bad
+// header (time_s not first, unknown or duplicate column, missing .cmd/.meas, a required joint
+// missing), wrong field count, non-numeric or non-finite value, time not strictly increasing,
+// fewer than 2 frames, and any sidecar problem. Numbers are parsed locale-independently.
+JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements& requirements);
+
+// Writes the CSV and then the sidecar, each atomically (see write_file_atomically). Numbers
+// are printed in the shortest form that round-trips, so read_joint_log returns bit-identical
+// values. Throws std::invalid_argument if `log` is not something read_joint_log would accept
+// (inconsistent sizes, non-finite values, time not strictly increasing, fewer than 2 frames,
+// bad joint names, no robot or rate_hz, units other than "rad"), and InputError if a file
+// cannot be written.
+void write_joint_log(const std::string& csv_path, const JointLog& log);
+
+}  // namespace motoflex

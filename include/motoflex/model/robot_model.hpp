@@ -1,0 +1,112 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "motoflex/model/parameters.hpp"
+
+namespace motoflex {
+
+// Which servo law drives the actuated joints (robot.yaml `servo`, overridable per scenario).
+enum class ServoKind {
+  kMotoflex,  // seed 001: PID → DC motor → gear train → joint torque, dry friction in ODE
+  kVelocity,  // seed 000: θ̇_d = −k_d(θ − θ_d) on an ODE joint motor limited to τ_max
+  kIdeal,     // reaches the next commanded angle in one step, torque-limited
+  kBench,     // the pendulum bench's voltage P servo (BAM)
+};
+std::optional<ServoKind> parse_servo_kind(const std::string& text);
+const char* to_string(ServoKind kind);
+
+// Structural choices made when a robot is loaded (they change bodies and joints, not values).
+struct StructureOptions {
+  int flex_sub_bodies = 1;      // sub-bodies per flexible link (1 = rigid)
+  bool universal_joints = true;  // merge declared hinge pairs into one ODE universal joint
+};
+
+struct BoxGeom {
+  std::string link;            // URDF link it came from
+  Eigen::Vector3d size_m;      // full edge lengths
+  Eigen::Isometry3d X_BG;      // box pose in its body frame
+  bool is_foot = false;        // may touch the ground without ending the rollout
+};
+
+// One ODE body. Body frames have their origin at the CoM and world orientation in the build
+// configuration (actuated joints at 0, held joints at their hold angles, flex joints at 0).
+struct BodySpec {
+  std::string name;
+  std::vector<std::string> links;  // URDF links lumped into this body
+  double mass_kg = 0.0;
+  Eigen::Matrix3d inertia_kg_m2 = Eigen::Matrix3d::Zero();  // about the CoM
+  Eigen::Vector3d com_W0_m = Eigen::Vector3d::Zero();       // CoM in the build configuration
+  std::vector<BoxGeom> boxes;
+  bool is_static = false;  // the welded base of a fixed-base robot: not an ODE body
+  int parent_joint = -1;   // joint whose child this body is (−1 for the root)
+};
+
+enum class JointKind {
+  kHinge,      // one revolute axis
+  kUniversal,  // two orthogonal actuated axes through one point (axis1 parent side)
+  kFlex,       // two bending axes between sub-bodies of a flexible link (springs)
+};
+
+struct JointSpec {
+  std::string name;
+  JointKind kind = JointKind::kHinge;
+  int parent_body = -1;
+  int child_body = -1;
+  Eigen::Vector3d anchor_W0_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axis1_W0 = Eigen::Vector3d::UnitY();  // unit, world frame at build config
+  Eigen::Vector3d axis2_W0 = Eigen::Vector3d::UnitX();  // second axis (universal, flex)
+  double lower1_rad = -std::numeric_limits<double>::infinity();
+  double upper1_rad = std::numeric_limits<double>::infinity();
+  double lower2_rad = -std::numeric_limits<double>::infinity();
+  double upper2_rad = std::numeric_limits<double>::infinity();
+  int actuator1 = -1;  // index into RobotModel::actuators driving axis 1, or −1
+  int actuator2 = -1;
+};
+
+// One actuated joint axis, in log column order.
+struct ActuatorSpec {
+  std::string name;   // URDF joint name, e.g. "LKneePitch"
+  std::string group;  // gear / servo group from robot.yaml, e.g. "A"
+  int joint = -1;     // index into RobotModel::joints
+  int axis = 1;       // 1 or 2
+  double lower_rad = -std::numeric_limits<double>::infinity();
+  double upper_rad = std::numeric_limits<double>::infinity();
+};
+
+// Everything constant about a robot. Built once, shared read-only by every rollout thread.
+struct RobotModel {
+  std::string name;
+  std::string directory;  // folder of robot.yaml
+  std::string urdf_path;
+  ServoKind default_servo = ServoKind::kIdeal;
+  StructureOptions structure;
+
+  std::vector<BodySpec> bodies;
+  std::vector<JointSpec> joints;        // topological order: a parent body precedes its children
+  std::vector<ActuatorSpec> actuators;  // log column order
+  bool fixed_base = false;
+  int root_body = 0;
+  int torso_body = 0;
+  Eigen::Matrix3d R_torsoBody_torsoLink = Eigen::Matrix3d::Identity();
+
+  double max_tilt_rad = 1.0;
+  double min_torso_height_m = 0.0;
+  double initial_clearance_m = 0.001;
+  std::map<std::string, double> stand_pose_rad;  // actuated joint → angle (missing: 0)
+
+  ParameterRegistry parameters;
+
+  std::optional<std::size_t> actuator_index(const std::string& joint_name) const;
+  std::vector<std::string> actuator_names() const;
+  // Stand pose in actuator order.
+  std::vector<double> stand_pose_vector() const;
+};
+
+}  // namespace motoflex

@@ -1,0 +1,54 @@
+#pragma once
+
+namespace motoflex {
+
+// A velocity command for an ODE joint motor: the motor row drives the joint toward
+// velocity_rad_s with at most fmax_nm (solved implicitly by ODE inside the step).
+struct MotorCommand {
+  double velocity_rad_s = 0.0;
+  double fmax_nm = 0.0;
+};
+
+// Seed 000 §II-C, eq. 3: θ̇_d = −k_d(θ − θ_d), torque limited to τ_max (Table I).
+struct VelocityServoParams {
+  double gain_per_s = 4.0;      // k_d
+  double torque_max_nm = 10.0;  // τ_max
+};
+MotorCommand velocity_servo(const VelocityServoParams& params, double commanded_rad,
+                            double measured_rad);
+
+// An ideal position servo: asks for the velocity that reaches the next commanded angle in one
+// step, with a generous torque limit (used for "ideal servos" runs and as a reference).
+// Throws std::invalid_argument if dt_s <= 0.
+struct IdealServoParams {
+  double torque_max_nm = 100.0;
+};
+MotorCommand ideal_servo(const IdealServoParams& params, double next_commanded_rad,
+                         double measured_rad, double dt_s);
+
+// The pendulum bench's voltage-controlled P servo (Dynamixel-style, BAM eq. 12–13):
+//   duty = clip(error_gain·kp·(θ_d − θ), −max_duty, +max_duty),  U = supply_v·duty,
+//   τ = K_t·U/R − K_t²·θ̇/R       (joint-side K_t and R; drive/brake H-bridge)
+// With torque disabled the H-bridge is released and the torque is zero.
+struct BenchServoParams {
+  double kp = 32.0;                       // firmware P gain, vendor units
+  double error_gain = 0.0028774;          // duty per (kp·rad)
+  double max_duty = 1.0;                  // duty limit
+  double supply_v = 7.4;                  // supply voltage
+  double torque_constant_nm_per_a = 1.0;  // K_t, joint side
+  double resistance_ohm = 2.6;            // R
+};
+double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
+                             double measured_rad, double velocity_rad_s, bool torque_enabled);
+
+// Dry + viscous joint friction as a budget for a zero-velocity ODE motor (seed 001 §2; BAM's
+// clipping model): the motor row holds the joint still with up to
+//   fmax = coulomb_nm + viscous_nm_s_per_rad·|θ̇|
+// so the joint sticks while the other torques stay below fmax and slips above it.
+struct JointFrictionParams {
+  double coulomb_nm = 0.0;
+  double viscous_nm_s_per_rad = 0.0;
+};
+MotorCommand joint_friction(const JointFrictionParams& params, double velocity_rad_s);
+
+}  // namespace motoflex

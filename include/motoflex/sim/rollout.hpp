@@ -1,0 +1,106 @@
+#pragma once
+
+#include <ode/ode.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "motoflex/model/parameters.hpp"
+#include "motoflex/model/robot_model.hpp"
+#include "motoflex/motion/command_trajectory.hpp"
+
+namespace motoflex {
+
+enum class StepSolver {
+  kStep,       // dWorldStep: exact LCP (Dantzig); bit-reproducible whatever the thread count
+  kQuickStep,  // dWorldQuickStep: iterative, faster, but NOT reproducible when rollouts run in
+               // parallel threads: it shuffles constraint rows with ODE's process-global RNG
+};
+
+struct RolloutOptions {
+  double dt_s = 0.001;             // physics step
+  StepSolver solver = StepSolver::kStep;
+  int quickstep_iterations = 20;   // dWorldQuickStep only
+  int gear_substeps = 100;         // gear sub-steps per physics step (motoflex servo)
+  ServoKind servo = ServoKind::kIdeal;
+  double settle_s = 0.0;           // hold the first commanded pose this long before t = 0
+  std::uint64_t seed = 1;          // sensor-noise stream
+  bool stop_on_fall = true;        // end the rollout at the first fall
+  bool record_torques = false;     // fill RolloutResult::joint_torque_nm
+};
+
+enum class RolloutEnd { kCompleted, kFell, kDiverged, kModelError };
+const char* to_string(RolloutEnd end);
+
+// What one rollout produced, sampled at the frames of the commanded trajectory.
+struct RolloutResult {
+  std::vector<std::string> joint_names;
+  std::vector<double> time_s;         // frame times (same as the trajectory's)
+  std::vector<double> commanded_rad;  // frame-major [frame * joints + joint]
+  std::vector<double> measured_rad;   // simulated encoder readings, same layout
+  std::vector<double> joint_torque_nm;  // actuator torque at each frame (if recorded)
+  std::vector<double> imu_roll_rad;
+  std::vector<double> imu_pitch_rad;
+  std::vector<double> torso_position_m;  // x, y, z of the torso CoM per frame
+  std::size_t frames_requested = 0;
+  std::size_t frames_completed = 0;  // T of the fitness: frames before the end or a fall
+  RolloutEnd end = RolloutEnd::kCompleted;
+  double end_time_s = 0.0;
+  std::string end_detail;            // e.g. "LThigh touched the ground"
+  std::size_t physics_steps = 0;
+  std::size_t joints() const { return joint_names.size(); }
+};
+
+// One robot in its own ODE world, stepped by one thread. Owns every ODE object it creates.
+// The model and parameters must outlive it. Construction throws ModelError when the
+// parameters cannot be simulated (e.g. an unstable gear sub-step).
+class Rollout {
+ public:
+  Rollout(const RobotModel& model, const ParameterSet& parameters, const RolloutOptions& options,
+          const std::vector<double>& initial_pose_rad);
+  ~Rollout();
+  Rollout(const Rollout&) = delete;
+  Rollout& operator=(const Rollout&) = delete;
+
+  // Advances one physics step. `command_now_rad` is the commanded angle at the current time
+  // (what the servos regulate to), `command_next_rad` the one at the end of the step (the ideal
+  // servo's target). Returns false once the rollout has ended (fall or divergence).
+  bool step(const double* command_now_rad, const double* command_next_rad);
+
+  double time_s() const { return time_s_; }
+  RolloutEnd end() const { return end_; }
+  const std::string& end_detail() const { return end_detail_; }
+  std::size_t joints() const;
+
+  double joint_angle_rad(std::size_t actuator) const;     // true angle (ODE)
+  double joint_rate_rad_s(std::size_t actuator) const;    // true rate (ODE)
+  double encoder_rad(std::size_t actuator);               // simulated sensor reading
+  double actuator_torque_nm(std::size_t actuator) const;  // torque the actuator applied last step
+  void imu_roll_pitch(double& roll_rad, double& pitch_rad) const;
+  Eigen::Vector3d torso_position_m() const;
+  double torso_tilt_rad() const;
+
+  // Raw handles for studies that need ODE directly (joint feedback, contact forces).
+  dWorldID world() const;
+  dBodyID body(std::size_t index) const;
+  dJointID joint(std::size_t index) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  double time_s_ = 0.0;
+  RolloutEnd end_ = RolloutEnd::kCompleted;
+  std::string end_detail_;
+};
+
+// Runs a whole rollout: settles on the first commanded pose, then follows the trajectory,
+// sampling the encoders at every trajectory frame. Never throws for a rollout that fails: a
+// ModelError or divergence is reported in the result.
+RolloutResult run_rollout(const RobotModel& model, const ParameterSet& parameters,
+                          const CommandTrajectory& commands, const RolloutOptions& options);
+
+}  // namespace motoflex

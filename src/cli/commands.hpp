@@ -1,0 +1,15 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace motoflex::cli {
+
+// Each command registers its options on `app` and returns the function that runs it; the
+// function returns the process exit code.
+using CommandRunner = std::function<int()>;
+
+CommandRunner add_simulate_command(CLI::App& app);
+CommandRunner add_record_command(CLI::App& app);
+CommandRunner add_bench_command(CLI::App& app);
+
+}  // namespace motoflex::cli

@@ -1,0 +1,37 @@
+// motoflex: one binary, `motoflex <command>`. Bad input prints one line
+// "motoflex: <file>:<line>: <field>: <message>" and exits with code 2.
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <string>
+
+#include "commands.hpp"
+#include "motoflex/core/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"motoflex: make robot simulations match real robots (MoToFlex on ODE)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("motoflex ") + MOTOFLEX_VERSION);
+  std::map<std::string, motoflex::cli::CommandRunner> runners;
+  runners["simulate"] = motoflex::cli::add_simulate_command(app);
+  runners["record"] = motoflex::cli::add_record_command(app);
+  runners["bench"] = motoflex::cli::add_bench_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    for (const auto* sub : app.get_subcommands()) return runners.at(sub->get_name())();
+  } catch (const motoflex::InputError& error) {
+    std::fprintf(stderr, "motoflex: %s\n", error.what());
+    return 2;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "motoflex: error: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

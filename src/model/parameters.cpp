@@ -1,0 +1,157 @@
+#include "motoflex/model/parameters.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/io/yaml_reader.hpp"
+
+namespace motoflex {
+namespace {
+
+// Longest suffix first, so "_nm_s_per_rad" wins over "_per_rad" and "_rad".
+constexpr std::array<std::pair<const char*, const char*>, 20> kUnitSuffixes = {{
+    {"_nm_s_per_rad", "N·m·s/rad"},
+    {"_v_s_per_rad", "V·s/rad"},
+    {"_v_per_rad_s", "V/(rad·s)"},
+    {"_nm_per_rad", "N·m/rad"},
+    {"_nm_per_a", "N·m/A"},
+    {"_v_per_rad", "V/rad"},
+    {"_kg_m2", "kg·m²"},
+    {"_per_s", "1/s"},
+    {"_ohm", "Ω"},
+    {"_rad", "rad"},
+    {"_bits", "bit"},
+    {"_nm", "N·m"},
+    {"_kg", "kg"},
+    {"_hz", "Hz"},
+    {"_v", "V"},
+    {"_h", "H"},
+    {"_s", "s"},
+    {"_m", "m"},
+    {"_n", "N"},
+    {"_a", "A"},
+}};
+
+}  // namespace
+
+std::string unit_from_parameter_name(const std::string& name) {
+  const std::size_t dot = name.rfind('.');
+  const std::string leaf = dot == std::string::npos ? name : name.substr(dot + 1);
+  for (const auto& [suffix, unit] : kUnitSuffixes) {
+    const std::string s(suffix);
+    if (leaf.size() > s.size() && leaf.compare(leaf.size() - s.size(), s.size(), s) == 0) {
+      return unit;
+    }
+  }
+  return "1";
+}
+
+void ParameterRegistry::add(ParameterSpec spec) {
+  if (index_.count(spec.name) != 0) {
+    throw std::invalid_argument("duplicate parameter '" + spec.name + "'");
+  }
+  if (!(spec.lower < spec.upper)) {
+    throw std::invalid_argument("parameter '" + spec.name + "': lower bound must be below upper");
+  }
+  index_.emplace(spec.name, specs_.size());
+  specs_.push_back(std::move(spec));
+}
+
+std::optional<std::size_t> ParameterRegistry::find(const std::string& name) const {
+  const auto it = index_.find(name);
+  if (it == index_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::string ParameterRegistry::closest_name(const std::string& name) const {
+  std::string best;
+  int best_distance = 4;
+  for (const auto& spec : specs_) {
+    const int d = edit_distance(name, spec.name);
+    if (d < best_distance) {
+      best_distance = d;
+      best = spec.name;
+    }
+  }
+  return best;
+}
+
+ParameterSet::ParameterSet(const ParameterRegistry& registry) : registry_(&registry) {
+  values_.reserve(registry.size());
+  for (const auto& spec : registry.specs()) values_.push_back(spec.default_value);
+}
+
+double ParameterSet::get(const std::string& name) const {
+  const auto index = registry_->find(name);
+  if (!index) throw std::out_of_range("unknown parameter '" + name + "'");
+  return values_[*index];
+}
+
+void ParameterSet::set(const std::string& name, double value) {
+  const auto index = registry_->find(name);
+  if (!index) throw std::out_of_range("unknown parameter '" + name + "'");
+  set(*index, value);
+}
+
+void ParameterSet::set(std::size_t index, double value) {
+  if (!std::isfinite(value)) {
+    throw std::invalid_argument("parameter '" + registry_->spec(index).name +
+                                "' must be a finite number");
+  }
+  values_.at(index) = value;
+}
+
+void apply_parameter_json_text(const std::string& text, const std::string& source,
+                               ParameterSet& set) {
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw InputError(source, 0, "", std::string("invalid JSON: ") + error.what());
+  }
+  if (document.is_object() && document.contains("parameters") &&
+      document["parameters"].is_object()) {
+    document = document["parameters"];
+  }
+  if (!document.is_object()) {
+    throw InputError(source, 0, "", "expected a JSON object of parameter name -> value");
+  }
+  for (const auto& [name, value] : document.items()) {
+    const auto index = set.registry().find(name);
+    if (!index) {
+      const std::string hint = set.registry().closest_name(name);
+      throw InputError(source, 0, name,
+                       "unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    if (!value.is_number()) throw InputError(source, 0, name, "expected a number");
+    const double number = value.get<double>();
+    if (!std::isfinite(number)) throw InputError(source, 0, name, "must be finite");
+    set.set(*index, number);
+  }
+}
+
+void apply_parameter_json_file(const std::string& path, ParameterSet& set) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "", "cannot open parameter file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  apply_parameter_json_text(buffer.str(), path, set);
+}
+
+std::string parameter_set_to_json(const ParameterSet& set) {
+  // nlohmann::ordered_json keeps registry order; doubles are printed to round-trip exactly.
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (std::size_t i = 0; i < set.registry().size(); ++i) {
+    out[set.registry().spec(i).name] = set.get(i);
+  }
+  return out.dump(2) + "\n";
+}
+
+}  // namespace motoflex

@@ -1,0 +1,50 @@
+#include "motoflex/model/robot_model.hpp"
+
+namespace motoflex {
+
+std::optional<ServoKind> parse_servo_kind(const std::string& text) {
+  if (text == "motoflex") return ServoKind::kMotoflex;
+  if (text == "velocity") return ServoKind::kVelocity;
+  if (text == "ideal") return ServoKind::kIdeal;
+  if (text == "bench") return ServoKind::kBench;
+  return std::nullopt;
+}
+
+const char* to_string(ServoKind kind) {
+  switch (kind) {
+    case ServoKind::kMotoflex:
+      return "motoflex";
+    case ServoKind::kVelocity:
+      return "velocity";
+    case ServoKind::kIdeal:
+      return "ideal";
+    case ServoKind::kBench:
+      return "bench";
+  }
+  return "?";
+}
+
+std::optional<std::size_t> RobotModel::actuator_index(const std::string& joint_name) const {
+  for (std::size_t i = 0; i < actuators.size(); ++i) {
+    if (actuators[i].name == joint_name) return i;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> RobotModel::actuator_names() const {
+  std::vector<std::string> names;
+  names.reserve(actuators.size());
+  for (const auto& a : actuators) names.push_back(a.name);
+  return names;
+}
+
+std::vector<double> RobotModel::stand_pose_vector() const {
+  std::vector<double> pose(actuators.size(), 0.0);
+  for (std::size_t i = 0; i < actuators.size(); ++i) {
+    const auto it = stand_pose_rad.find(actuators[i].name);
+    if (it != stand_pose_rad.end()) pose[i] = it->second;
+  }
+  return pose;
+}
+
+}  // namespace motoflex

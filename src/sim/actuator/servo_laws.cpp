@@ -1,0 +1,45 @@
+#include "motoflex/sim/actuator/servo_laws.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace motoflex {
+
+MotorCommand velocity_servo(const VelocityServoParams& params, double commanded_rad,
+                            double measured_rad) {
+  // Seed 000 §II-C, eq. 3; the torque limit is left to ODE's motor row, which clips the
+  // force it applies to reach the velocity at fmax.
+  return MotorCommand{-params.gain_per_s * (measured_rad - commanded_rad), params.torque_max_nm};
+}
+
+MotorCommand ideal_servo(const IdealServoParams& params, double next_commanded_rad,
+                         double measured_rad, double dt_s) {
+  if (!(dt_s > 0.0)) throw std::invalid_argument("ideal_servo: dt_s must be > 0");
+  return MotorCommand{(next_commanded_rad - measured_rad) / dt_s, params.torque_max_nm};
+}
+
+double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
+                             double measured_rad, double velocity_rad_s, bool torque_enabled) {
+  // A released H-bridge leaves the windings open: no current, so neither drive nor back-EMF
+  // braking.
+  if (!torque_enabled) return 0.0;
+  // BAM eq. 12: the firmware's P law saturates at the PWM duty limit. min/max rather than
+  // std::clamp, which is undefined for a (bad) negative max_duty.
+  const double duty = std::min(
+      std::max(params.error_gain * params.kp * (commanded_rad - measured_rad), -params.max_duty),
+      params.max_duty);
+  const double voltage_v = params.supply_v * duty;
+  // BAM eq. 13: current (U − K_t·θ̇)/R through the windings, torque K_t·I.
+  const double kt = params.torque_constant_nm_per_a;
+  return kt * voltage_v / params.resistance_ohm - kt * kt * velocity_rad_s / params.resistance_ohm;
+}
+
+MotorCommand joint_friction(const JointFrictionParams& params, double velocity_rad_s) {
+  // A zero-velocity motor row with a bounded force is ODE's way to express stiction: the joint
+  // is held while the holding torque fits in the budget, and slides once it does not.
+  return MotorCommand{0.0,
+                      params.coulomb_nm + params.viscous_nm_s_per_rad * std::abs(velocity_rad_s)};
+}
+
+}  // namespace motoflex

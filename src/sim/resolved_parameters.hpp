@@ -1,0 +1,62 @@
+#pragma once
+
+// Internal to the rollout: a ParameterSet turned into the typed values each stage reads, once
+// per rollout, so the physics step never looks a name up.
+
+#include <vector>
+
+#include "motoflex/model/parameters.hpp"
+#include "motoflex/model/robot_model.hpp"
+#include "motoflex/sim/actuator/dc_motor.hpp"
+#include "motoflex/sim/actuator/gear_train.hpp"
+#include "motoflex/sim/actuator/pid.hpp"
+#include "motoflex/sim/actuator/servo_laws.hpp"
+#include "motoflex/sim/joint_encoder.hpp"
+
+namespace motoflex::detail {
+
+struct ActuatorParameters {
+  PidGains pid;
+  DcMotorParams motor;
+  GearParams gear;
+  JointFrictionParams friction;
+  VelocityServoParams velocity;
+  BenchServoParams bench;
+};
+
+struct FlexParameters {
+  double spring_nm_per_rad = 0.0;
+  double damping_nm_s_per_rad = 0.0;
+  double friction_nm = 0.0;
+};
+
+struct ContactParameters {
+  double mu = 1.0;
+  double soft_erp = 0.2;
+  double soft_cfm = 1e-4;
+  double slip = 0.0;
+};
+
+struct BenchLoad {
+  double mass_kg = 0.0;
+  double length_m = 0.0;
+  double armature_kg_m2 = 0.0;
+};
+
+struct ResolvedParameters {
+  std::vector<ActuatorParameters> actuators;  // model actuator order
+  IdealServoParams ideal;
+  FlexParameters flex;
+  ContactParameters contact;
+  double world_erp = 0.2;
+  double world_cfm = 1e-10;
+  EncoderParams encoder;
+  BenchLoad bench_load;
+};
+
+// Reads what `servo` needs (plus flex, contact, world and sensor values). Throws ModelError
+// naming the first parameter the model does not declare.
+ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSet& values,
+                                      ServoKind servo);
+
+}  // namespace motoflex::detail

@@ -1,0 +1,524 @@
+#include "motoflex/sim/rollout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/model/body_kinematics.hpp"
+#include "motoflex/sim/actuator/dc_motor.hpp"
+#include "motoflex/sim/actuator/gear_train.hpp"
+#include "motoflex/sim/actuator/pid.hpp"
+#include "motoflex/sim/actuator/servo_laws.hpp"
+#include "motoflex/sim/joint_encoder.hpp"
+#include "motoflex/sim/ode_runtime.hpp"
+#include "ode_axis.hpp"
+#include "resolved_parameters.hpp"
+
+namespace motoflex {
+namespace {
+
+constexpr int kMaxContactsPerFoot = 4;
+constexpr double kMaxLinearSpeed_m_s = 50.0;    // beyond this a legged robot has diverged
+constexpr double kMaxAngularSpeed_rad_s = 500.0;
+constexpr std::uint64_t kEncoderNoisePurpose = 0x656e636f646572ULL;  // "encoder"
+
+void to_ode_rotation(const Eigen::Matrix3d& R, dMatrix3 out) {
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) out[r * 4 + c] = R(r, c);
+    out[r * 4 + 3] = 0.0;
+  }
+}
+
+Eigen::Matrix3d from_ode_rotation(const dReal* R) {
+  Eigen::Matrix3d out;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) out(r, c) = R[r * 4 + c];
+  }
+  return out;
+}
+
+// Converts limits given in our sign convention to ODE's for an axis with `sign`.
+void ode_limits(double sign, double lower, double upper, double& lo, double& hi) {
+  lo = sign > 0 ? lower : -upper;
+  hi = sign > 0 ? upper : -lower;
+}
+
+}  // namespace
+
+const char* to_string(RolloutEnd end) {
+  switch (end) {
+    case RolloutEnd::kCompleted:
+      return "completed";
+    case RolloutEnd::kFell:
+      return "fell";
+    case RolloutEnd::kDiverged:
+      return "diverged";
+    case RolloutEnd::kModelError:
+      return "model_error";
+  }
+  return "?";
+}
+
+struct Rollout::Impl {
+  const RobotModel& model;
+  RolloutOptions options;
+  detail::ResolvedParameters params;
+
+  dWorldID world = nullptr;
+  dThreadingImplementationID threading = nullptr;
+  dJointGroupID contact_group = nullptr;
+  dGeomID ground = nullptr;
+  std::vector<dBodyID> bodies;  // nullptr for a static (welded) body
+  std::vector<dJointID> joints;
+  std::vector<dJointID> flex_friction_motors;
+  std::vector<dGeomID> geoms;
+  struct GeomRef {
+    dGeomID geom;
+    dBodyID body;
+    bool is_foot;
+    std::size_t body_index;
+  };
+  std::vector<GeomRef> foot_geoms;
+  std::vector<GeomRef> other_geoms;
+
+  std::vector<detail::OdeAxis> axes;           // per actuator
+  std::vector<double> joint_torque1, joint_torque2;  // per model joint, accumulated each step
+  std::vector<std::size_t> flex_joints;        // model joint indices
+  double flex_velocity_gain = 0.0;             // ERP/h of the flex springs
+  std::vector<Pid> pids;
+  std::vector<DcMotor> motors;
+  std::vector<GearTrain> gears;
+  std::vector<JointEncoder> encoders;
+  std::vector<double> applied_torque_nm;
+  dContact contact_template{};
+
+  Impl(const RobotModel& m, const ParameterSet& values, const RolloutOptions& o)
+      : model(m), options(o), params(detail::resolve_parameters(m, values, o.servo)) {}
+
+  ~Impl() {
+    if (world != nullptr) dWorldSetStepThreadingImplementation(world, nullptr, nullptr);
+    if (threading != nullptr) dThreadingFreeImplementation(threading);
+    for (dGeomID g : geoms) dGeomDestroy(g);
+    if (ground != nullptr) dGeomDestroy(ground);
+    if (contact_group != nullptr) dJointGroupDestroy(contact_group);
+    if (world != nullptr) dWorldDestroy(world);  // also destroys bodies and joints
+  }
+
+  void build_world();
+  void build_bodies();
+  void build_joints();
+  void build_actuators();
+  void place(const std::vector<double>& pose_rad);
+  void apply_servos(const double* now_rad, const double* next_rad);
+  void apply_flex_springs();
+  void collide_feet();
+  std::optional<std::string> fall_reason(const Rollout& self) const;
+  bool diverged(std::string& detail) const;
+};
+
+void Rollout::Impl::build_world() {
+  world = dWorldCreate();
+  // Each world gets its own threading implementation: worlds stepped in parallel must not
+  // share ODE's global default one (it races; ode_and_titan8.md §2.6).
+  threading = dThreadingAllocateSelfThreadedImplementation();
+  dWorldSetStepThreadingImplementation(world, dThreadingImplementationGetFunctions(threading),
+                                       threading);
+  dWorldSetGravity(world, 0.0, 0.0, -9.81);
+  // Set before joints are created: joints copy ERP/CFM into their limit and motor rows.
+  dWorldSetERP(world, params.world_erp);
+  dWorldSetCFM(world, params.world_cfm);
+  dWorldSetQuickStepNumIterations(world, options.quickstep_iterations);
+  contact_group = dJointGroupCreate(0);
+  ground = dCreatePlane(nullptr, 0.0, 0.0, 1.0, 0.0);
+
+  contact_template.surface.mode =
+      dContactApprox1 | dContactSoftERP | dContactSoftCFM | dContactSlip1 | dContactSlip2;
+  contact_template.surface.mu = params.contact.mu;
+  contact_template.surface.soft_erp = params.contact.soft_erp;
+  contact_template.surface.soft_cfm = params.contact.soft_cfm;
+  contact_template.surface.slip1 = params.contact.slip;
+  contact_template.surface.slip2 = params.contact.slip;
+}
+
+void Rollout::Impl::build_bodies() {
+  bodies.assign(model.bodies.size(), nullptr);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const BodySpec& spec = model.bodies[b];
+    Eigen::Vector3d com = spec.com_W0_m;
+    if (!spec.is_static) {
+      double mass = spec.mass_kg;
+      Eigen::Matrix3d inertia = spec.inertia_kg_m2;
+      // Bench: the arm is a point mass at bench.length_m from the axis plus the armature.
+      if (options.servo == ServoKind::kBench && spec.parent_joint >= 0 &&
+          model.joints[spec.parent_joint].actuator1 == 0) {
+        const JointSpec& joint = model.joints[spec.parent_joint];
+        Eigen::Vector3d arm = spec.com_W0_m - joint.anchor_W0_m;
+        arm -= joint.axis1_W0 * joint.axis1_W0.dot(arm);
+        if (arm.norm() < 1e-9) throw ModelError("bench arm CoM lies on the joint axis");
+        mass = params.bench_load.mass_kg;
+        com = joint.anchor_W0_m + arm.normalized() * params.bench_load.length_m;
+        inertia = Eigen::Matrix3d::Identity() * std::max(params.bench_load.armature_kg_m2, 1e-9);
+      }
+      dBodyID body = dBodyCreate(world);
+      dMass m;
+      dMassSetParameters(&m, mass, 0.0, 0.0, 0.0, inertia(0, 0), inertia(1, 1), inertia(2, 2),
+                         inertia(0, 1), inertia(0, 2), inertia(1, 2));
+      if (!dMassCheck(&m)) throw ModelError("body " + spec.name + " has an invalid mass");
+      dBodySetMass(body, &m);
+      dBodySetPosition(body, com.x(), com.y(), com.z());
+      bodies[b] = body;
+    }
+    for (const BoxGeom& box : spec.boxes) {
+      dGeomID geom = dCreateBox(nullptr, box.size_m.x(), box.size_m.y(), box.size_m.z());
+      geoms.push_back(geom);
+      dMatrix3 R;
+      to_ode_rotation(box.X_BG.linear(), R);
+      if (bodies[b] != nullptr) {
+        dGeomSetBody(geom, bodies[b]);
+        const Eigen::Vector3d offset = box.X_BG.translation() + spec.com_W0_m - com;
+        dGeomSetOffsetPosition(geom, offset.x(), offset.y(), offset.z());
+        dGeomSetOffsetRotation(geom, R);
+      } else {
+        const Eigen::Vector3d p = box.X_BG.translation() + spec.com_W0_m;
+        dGeomSetPosition(geom, p.x(), p.y(), p.z());
+        dGeomSetRotation(geom, R);
+        continue;  // the welded base never falls
+      }
+      (box.is_foot ? foot_geoms : other_geoms).push_back({geom, bodies[b], box.is_foot, b});
+    }
+  }
+}
+
+void Rollout::Impl::build_joints() {
+  joints.assign(model.joints.size(), nullptr);
+  const double h = options.dt_s;
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const JointSpec& spec = model.joints[j];
+    dBodyID parent = bodies[spec.parent_body];
+    dBodyID child = bodies[spec.child_body];
+    const Eigen::Vector3d& a = spec.anchor_W0_m;
+    if (spec.kind == JointKind::kHinge) {
+      // body1 = child: ODE's hinge angle is body1 relative to body2, our convention.
+      dJointID joint = dJointCreateHinge(world, nullptr);
+      dJointAttach(joint, child, parent);
+      dJointSetHingeAnchor(joint, a.x(), a.y(), a.z());
+      dJointSetHingeAxis(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
+      if (std::isfinite(spec.lower1_rad)) {
+        dJointSetHingeParam(joint, dParamLoStop, spec.lower1_rad);
+        dJointSetHingeParam(joint, dParamHiStop, spec.upper1_rad);
+      }
+      joints[j] = joint;
+      continue;
+    }
+    // Universal and flex: body1 = parent carries axis 1, body2 = child carries axis 2; ODE then
+    // reports both angles with the opposite sign of ours (checked in tests).
+    dJointID joint = dJointCreateUniversal(world, nullptr);
+    dJointAttach(joint, parent, child);
+    dJointSetUniversalAnchor(joint, a.x(), a.y(), a.z());
+    dJointSetUniversalAxis1(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
+    dJointSetUniversalAxis2(joint, spec.axis2_W0.x(), spec.axis2_W0.y(), spec.axis2_W0.z());
+    joints[j] = joint;
+    if (spec.kind == JointKind::kUniversal) {
+      double lo = 0.0, hi = 0.0;
+      if (std::isfinite(spec.lower1_rad)) {
+        ode_limits(-1.0, spec.lower1_rad, spec.upper1_rad, lo, hi);
+        dJointSetUniversalParam(joint, dParamLoStop, lo);
+        dJointSetUniversalParam(joint, dParamHiStop, hi);
+      }
+      if (std::isfinite(spec.lower2_rad)) {
+        ode_limits(-1.0, spec.lower2_rad, spec.upper2_rad, lo, hi);
+        dJointSetUniversalParam(joint, dParamLoStop2, lo);
+        dJointSetUniversalParam(joint, dParamHiStop2, hi);
+      }
+      continue;
+    }
+    // Flex joint: the spring −D_B·α and damping (seed 001 eq. 1) are integrated implicitly by
+    // a motor row whose target velocity is −(ERP/h)·α with the matching CFM, i.e. ODE's
+    // spring-damper equivalence ERP = h·k/(h·k + c), CFM = 1/(h·k + c). An explicit torque
+    // would need h·sqrt(D_B/I) < 2, which the small sub-bodies do not meet at 1 ms.
+    const double k = params.flex.spring_nm_per_rad;
+    const double c = params.flex.damping_nm_s_per_rad;
+    const double erp = h * k / (h * k + c);
+    const double cfm = 1.0 / (h * k + c);
+    flex_velocity_gain = erp / h;
+    for (const auto& [fmax, cfm_param] :
+         {std::pair{dParamFMax, dParamCFM}, std::pair{dParamFMax2, dParamCFM2}}) {
+      dJointSetUniversalParam(joint, fmax, dInfinity);
+      dJointSetUniversalParam(joint, cfm_param, cfm);
+    }
+    flex_joints.push_back(j);
+    if (params.flex.friction_nm > 0.0) {
+      // Coulomb damping of the flex joint: a zero-velocity angular motor on both bending axes.
+      dJointID motor = dJointCreateAMotor(world, nullptr);
+      dJointAttach(motor, parent, child);
+      dJointSetAMotorMode(motor, dAMotorUser);
+      dJointSetAMotorNumAxes(motor, 2);
+      dJointSetAMotorAxis(motor, 0, 1, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
+      dJointSetAMotorAxis(motor, 1, 2, spec.axis2_W0.x(), spec.axis2_W0.y(), spec.axis2_W0.z());
+      dJointSetAMotorParam(motor, dParamVel, 0.0);
+      dJointSetAMotorParam(motor, dParamVel2, 0.0);
+      dJointSetAMotorParam(motor, dParamFMax, params.flex.friction_nm);
+      dJointSetAMotorParam(motor, dParamFMax2, params.flex.friction_nm);
+      flex_friction_motors.push_back(motor);
+    }
+  }
+  joint_torque1.assign(model.joints.size(), 0.0);
+  joint_torque2.assign(model.joints.size(), 0.0);
+}
+
+void Rollout::Impl::build_actuators() {
+  const std::size_t n = model.actuators.size();
+  applied_torque_nm.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ActuatorSpec& spec = model.actuators[i];
+    detail::OdeAxis axis;
+    axis.joint = joints[spec.joint];
+    axis.universal = model.joints[spec.joint].kind != JointKind::kHinge;
+    axis.axis = spec.axis;
+    axis.sign = axis.universal ? -1.0 : 1.0;
+    axes.push_back(axis);
+    encoders.emplace_back(params.encoder, options.dt_s,
+                          RandomStream({options.seed, kEncoderNoisePurpose, i}));
+    if (options.servo == ServoKind::kMotoflex) {
+      const auto& p = params.actuators[i];
+      pids.emplace_back(p.pid, options.dt_s);
+      motors.emplace_back(p.motor, options.dt_s);
+      gears.emplace_back(p.gear, options.dt_s, options.gear_substeps);
+    }
+  }
+}
+
+void Rollout::Impl::place(const std::vector<double>& pose_rad) {
+  std::vector<Eigen::Isometry3d> poses = body_poses(model, pose_rad);
+  if (!model.fixed_base) {
+    const double lowest = lowest_foot_point_z(model, poses);
+    if (std::isfinite(lowest)) {
+      const Eigen::Vector3d shift(0.0, 0.0, model.initial_clearance_m - lowest);
+      for (auto& X : poses) X.pretranslate(shift);
+    }
+  }
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (bodies[b] == nullptr) continue;
+    Eigen::Vector3d com = poses[b].translation();
+    // A bench arm's CoM was moved along the arm; keep it where build_bodies put it.
+    const dReal* built = dBodyGetPosition(bodies[b]);
+    const Eigen::Vector3d built_offset =
+        Eigen::Vector3d(built[0], built[1], built[2]) - model.bodies[b].com_W0_m;
+    com += poses[b].linear() * built_offset;
+    dMatrix3 R;
+    to_ode_rotation(poses[b].linear(), R);
+    dBodySetPosition(bodies[b], com.x(), com.y(), com.z());
+    dBodySetRotation(bodies[b], R);
+    dBodySetLinearVel(bodies[b], 0.0, 0.0, 0.0);
+    dBodySetAngularVel(bodies[b], 0.0, 0.0, 0.0);
+  }
+  for (std::size_t i = 0; i < encoders.size(); ++i) encoders[i].reset(axes[i].angle_rad());
+}
+
+void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) {
+  const std::size_t n = axes.size();
+  std::fill(joint_torque1.begin(), joint_torque1.end(), 0.0);
+  std::fill(joint_torque2.begin(), joint_torque2.end(), 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const detail::OdeAxis& axis = axes[i];
+    const double q = axis.angle_rad();
+    const double w = axis.rate_rad_s();
+    double torque = 0.0;
+    switch (options.servo) {
+      case ServoKind::kMotoflex: {
+        const auto& p = params.actuators[i];
+        // seed 001, Algorithm 1 (PID → clamp → RL → K_t, B·ω_m) then Algorithm 2 (gear).
+        const double volts = pids[i].update(now_rad[i] - q);
+        const double motor_torque = motors[i].update(volts, w * p.gear.ratio);
+        torque = gears[i].update(motor_torque);
+        const MotorCommand friction = joint_friction(p.friction, w);
+        axis.set_motor(friction.velocity_rad_s, friction.fmax_nm);
+        break;
+      }
+      case ServoKind::kVelocity: {
+        const MotorCommand command = velocity_servo(params.actuators[i].velocity, now_rad[i], q);
+        axis.set_motor(command.velocity_rad_s, command.fmax_nm);
+        torque = std::numeric_limits<double>::quiet_NaN();
+        break;
+      }
+      case ServoKind::kIdeal: {
+        const MotorCommand command = ideal_servo(params.ideal, next_rad[i], q, options.dt_s);
+        axis.set_motor(command.velocity_rad_s, command.fmax_nm);
+        torque = std::numeric_limits<double>::quiet_NaN();
+        break;
+      }
+      case ServoKind::kBench: {
+        const auto& p = params.actuators[i];
+        torque = bench_servo_torque_nm(p.bench, now_rad[i], q, w, true);
+        const MotorCommand friction = joint_friction(p.friction, w);
+        axis.set_motor(friction.velocity_rad_s, friction.fmax_nm);
+        break;
+      }
+    }
+    applied_torque_nm[i] = torque;
+    if (std::isfinite(torque)) {
+      const ActuatorSpec& spec = model.actuators[i];
+      (spec.axis == 1 ? joint_torque1 : joint_torque2)[spec.joint] += axis.sign * torque;
+    }
+  }
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    if (joint_torque1[j] == 0.0 && joint_torque2[j] == 0.0) continue;
+    if (model.joints[j].kind == JointKind::kHinge) {
+      dJointAddHingeTorque(joints[j], joint_torque1[j]);
+    } else {
+      dJointAddUniversalTorques(joints[j], joint_torque1[j], joint_torque2[j]);
+    }
+  }
+}
+
+void Rollout::Impl::apply_flex_springs() {
+  for (const std::size_t j : flex_joints) {
+    dJointID joint = joints[j];
+    dJointSetUniversalParam(joint, dParamVel, -flex_velocity_gain * dJointGetUniversalAngle1(joint));
+    dJointSetUniversalParam(joint, dParamVel2,
+                            -flex_velocity_gain * dJointGetUniversalAngle2(joint));
+  }
+}
+
+void Rollout::Impl::collide_feet() {
+  dContactGeom contacts[kMaxContactsPerFoot];
+  for (const GeomRef& foot : foot_geoms) {
+    const int n = dCollide(foot.geom, ground, kMaxContactsPerFoot, contacts, sizeof(dContactGeom));
+    for (int k = 0; k < n; ++k) {
+      dContact contact = contact_template;
+      contact.geom = contacts[k];
+      dJointID joint = dJointCreateContact(world, contact_group, &contact);
+      dJointAttach(joint, foot.body, nullptr);
+    }
+  }
+}
+
+std::optional<std::string> Rollout::Impl::fall_reason(const Rollout& self) const {
+  for (const GeomRef& ref : other_geoms) {
+    dReal aabb[6];
+    dGeomGetAABB(ref.geom, aabb);
+    if (aabb[4] <= 0.0) return model.bodies[ref.body_index].name + " touched the ground";
+  }
+  if (self.torso_tilt_rad() > model.max_tilt_rad) return std::string("torso tilted too far");
+  if (model.min_torso_height_m > 0.0 && self.torso_position_m().z() < model.min_torso_height_m) {
+    return std::string("torso dropped too low");
+  }
+  return std::nullopt;
+}
+
+bool Rollout::Impl::diverged(std::string& detail) const {
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (bodies[b] == nullptr) continue;
+    const dReal* p = dBodyGetPosition(bodies[b]);
+    const dReal* v = dBodyGetLinearVel(bodies[b]);
+    const dReal* w = dBodyGetAngularVel(bodies[b]);
+    const double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    const double w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+    if (!std::isfinite(p[0] + p[1] + p[2] + v2 + w2)) {
+      detail = model.bodies[b].name + " state is not finite";
+      return true;
+    }
+    if (v2 > kMaxLinearSpeed_m_s * kMaxLinearSpeed_m_s ||
+        w2 > kMaxAngularSpeed_rad_s * kMaxAngularSpeed_rad_s) {
+      detail = model.bodies[b].name + " moves absurdly fast";
+      return true;
+    }
+  }
+  return false;
+}
+
+Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
+                 const RolloutOptions& options, const std::vector<double>& initial_pose_rad) {
+  if (!(options.dt_s > 0.0)) throw ModelError("physics dt_s must be positive");
+  if (initial_pose_rad.size() != model.actuators.size()) {
+    throw ModelError("initial pose has the wrong number of joints");
+  }
+  ensure_ode_ready();
+  impl_ = std::make_unique<Impl>(model, parameters, options);
+  impl_->build_world();
+  impl_->build_bodies();
+  impl_->build_joints();
+  impl_->build_actuators();
+  impl_->place(initial_pose_rad);
+}
+
+Rollout::~Rollout() = default;
+
+std::size_t Rollout::joints() const { return impl_->axes.size(); }
+
+bool Rollout::step(const double* command_now_rad, const double* command_next_rad) {
+  if (end_ != RolloutEnd::kCompleted) return false;
+  Impl& s = *impl_;
+  try {
+    s.apply_servos(command_now_rad, command_next_rad);
+    s.apply_flex_springs();
+    s.collide_feet();
+    const int ok = s.options.solver == StepSolver::kStep ? dWorldStep(s.world, s.options.dt_s)
+                                                         : dWorldQuickStep(s.world, s.options.dt_s);
+    dJointGroupEmpty(s.contact_group);
+    if (!ok) throw ModelError("ODE ran out of memory in the step");
+  } catch (const ModelError& error) {
+    end_ = RolloutEnd::kDiverged;
+    end_detail_ = error.what();
+    dJointGroupEmpty(s.contact_group);
+    return false;
+  }
+  time_s_ += s.options.dt_s;
+  for (std::size_t i = 0; i < s.encoders.size(); ++i) s.encoders[i].push(s.axes[i].angle_rad());
+  if (s.diverged(end_detail_)) {
+    end_ = RolloutEnd::kDiverged;
+    return false;
+  }
+  if (const auto reason = s.fall_reason(*this)) {
+    end_detail_ = *reason;
+    if (s.options.stop_on_fall) {
+      end_ = RolloutEnd::kFell;
+      return false;
+    }
+  }
+  return true;
+}
+
+double Rollout::joint_angle_rad(std::size_t actuator) const {
+  return impl_->axes.at(actuator).angle_rad();
+}
+double Rollout::joint_rate_rad_s(std::size_t actuator) const {
+  return impl_->axes.at(actuator).rate_rad_s();
+}
+double Rollout::encoder_rad(std::size_t actuator) { return impl_->encoders.at(actuator).read(); }
+double Rollout::actuator_torque_nm(std::size_t actuator) const {
+  return impl_->applied_torque_nm.at(actuator);
+}
+
+void Rollout::imu_roll_pitch(double& roll_rad, double& pitch_rad) const {
+  const dBodyID torso = impl_->bodies[impl_->model.torso_body];
+  const Eigen::Matrix3d R = (torso == nullptr ? Eigen::Matrix3d::Identity()
+                                              : from_ode_rotation(dBodyGetRotation(torso))) *
+                            impl_->model.R_torsoBody_torsoLink;
+  // Z-Y-X (yaw-pitch-roll) angles of the torso link.
+  roll_rad = std::atan2(R(2, 1), R(2, 2));
+  pitch_rad = std::asin(std::clamp(-R(2, 0), -1.0, 1.0));
+}
+
+Eigen::Vector3d Rollout::torso_position_m() const {
+  const dBodyID torso = impl_->bodies[impl_->model.torso_body];
+  if (torso == nullptr) return impl_->model.bodies[impl_->model.torso_body].com_W0_m;
+  const dReal* p = dBodyGetPosition(torso);
+  return {p[0], p[1], p[2]};
+}
+
+double Rollout::torso_tilt_rad() const {
+  const dBodyID torso = impl_->bodies[impl_->model.torso_body];
+  if (torso == nullptr) return 0.0;
+  const Eigen::Matrix3d R =
+      from_ode_rotation(dBodyGetRotation(torso)) * impl_->model.R_torsoBody_torsoLink;
+  return std::acos(std::clamp(R(2, 2), -1.0, 1.0));
+}
+
+dWorldID Rollout::world() const { return impl_->world; }
+dBodyID Rollout::body(std::size_t index) const { return impl_->bodies.at(index); }
+dJointID Rollout::joint(std::size_t index) const { return impl_->joints.at(index); }
+
+}  // namespace motoflex

@@ -1,0 +1,74 @@
+#include "motoflex/sim/actuator/servo_laws.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace motoflex {
+namespace {
+
+TEST(ServoLawsTest, VelocityServoFollowsEq3WithTorqueLimit) {
+  const VelocityServoParams params{.gain_per_s = 4.0, .torque_max_nm = 10.0};
+  // θ̇_d = −k_d(θ − θ_d): 0.5 rad short of the target → +2 rad/s.
+  MotorCommand command = velocity_servo(params, 0.5, 0.0);
+  EXPECT_DOUBLE_EQ(command.velocity_rad_s, 2.0);
+  EXPECT_EQ(command.fmax_nm, 10.0);  // ODE's motor row clips the torque at τ_max
+  command = velocity_servo(params, -0.25, 0.5);
+  EXPECT_DOUBLE_EQ(command.velocity_rad_s, -3.0);
+  EXPECT_EQ(command.fmax_nm, 10.0);
+  EXPECT_EQ(velocity_servo(params, 1.2, 1.2).velocity_rad_s, 0.0);
+}
+
+TEST(ServoLawsTest, IdealServoReachesNextTargetInOneStep) {
+  const MotorCommand command = ideal_servo({.torque_max_nm = 100.0}, 0.31, 0.3, 1e-3);
+  EXPECT_NEAR(command.velocity_rad_s, 10.0, 1e-9);
+  EXPECT_EQ(command.fmax_nm, 100.0);
+  EXPECT_THROW(ideal_servo({}, 0.0, 0.0, 0.0), std::invalid_argument);
+}
+
+TEST(ServoLawsTest, BenchServoStallsAtClippedDuty) {
+  BenchServoParams params;
+  params.max_duty = 0.9;
+  // A large error saturates the duty (0.0028774·32·20 = 1.84 > 0.9): τ = K_t·V·max_duty/R at
+  // zero speed.
+  const double stall_nm =
+      params.torque_constant_nm_per_a * params.supply_v * params.max_duty / params.resistance_ohm;
+  EXPECT_DOUBLE_EQ(bench_servo_torque_nm(params, 20.0, 0.0, 0.0, true), stall_nm);
+  EXPECT_DOUBLE_EQ(bench_servo_torque_nm(params, -20.0, 0.0, 0.0, true), -stall_nm);
+}
+
+TEST(ServoLawsTest, BenchServoLinearRegionAndBackEmf) {
+  BenchServoParams params;
+  params.torque_constant_nm_per_a = 0.8;
+  const double error_rad = 0.1;  // duty = 0.0028774·32·0.1 = 0.0092, unclipped
+  const double duty = params.error_gain * params.kp * error_rad;
+  ASSERT_LT(duty, params.max_duty);
+  const double kt = params.torque_constant_nm_per_a;
+  const double r = params.resistance_ohm;
+  EXPECT_NEAR(bench_servo_torque_nm(params, error_rad, 0.0, 0.0, true),
+              kt * params.supply_v * duty / r, 1e-15);
+  // The back-EMF brakes the motion in either direction, even with zero error.
+  EXPECT_NEAR(bench_servo_torque_nm(params, 0.0, 0.0, 2.0, true), -kt * kt * 2.0 / r, 1e-15);
+  EXPECT_NEAR(bench_servo_torque_nm(params, 0.0, 0.0, -2.0, true), kt * kt * 2.0 / r, 1e-15);
+  EXPECT_NEAR(bench_servo_torque_nm(params, error_rad, 0.0, 2.0, true),
+              kt * params.supply_v * duty / r - kt * kt * 2.0 / r, 1e-15);
+}
+
+TEST(ServoLawsTest, BenchServoWithTorqueDisabledIsFree) {
+  const BenchServoParams params;
+  EXPECT_EQ(bench_servo_torque_nm(params, 3.0, 0.0, 5.0, false), 0.0);
+}
+
+TEST(ServoLawsTest, JointFrictionBudgetIsCoulombPlusViscous) {
+  const JointFrictionParams params{.coulomb_nm = 0.05, .viscous_nm_s_per_rad = 0.2};
+  MotorCommand command = joint_friction(params, 0.0);
+  EXPECT_EQ(command.velocity_rad_s, 0.0);
+  EXPECT_EQ(command.fmax_nm, 0.05);
+  command = joint_friction(params, -1.5);
+  EXPECT_EQ(command.velocity_rad_s, 0.0);
+  EXPECT_DOUBLE_EQ(command.fmax_nm, 0.05 + 0.2 * 1.5);  // symmetric in the direction of motion
+  EXPECT_DOUBLE_EQ(joint_friction(params, 1.5).fmax_nm, command.fmax_nm);
+}
+
+}  // namespace
+}  // namespace motoflex
