@@ -1,0 +1,74 @@
+#!/usr/bin/env python3
+"""Simulator-core benchmark: physics steps per second of the bundled robots.
+
+Runs `build/motoflex bench` for each configuration REPEATS times (interleaved, so machine load
+affects all alike), prints the median steps/s and real-time factor per configuration, the
+speed-up of 4 rollouts on 2 threads over 1 thread, and the gain of universal joints.
+Usage: scripts/bench_core.py [--repeats 3] [--seconds 5] [--json OUT.json]
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BINARY = os.path.join(ROOT, "build", "motoflex")
+
+CONFIGS = [
+    ("nao rigid, ideal servos", ["--robot", "nao", "--servo", "ideal", "--flex", "1"]),
+    ("nao rigid, ideal servos, no universal", ["--robot", "nao", "--servo", "ideal", "--flex", "1", "--no-universal"]),
+    ("nao full pipeline (100 gear sub-steps, 2 flex sub-bodies)",
+     ["--robot", "nao", "--servo", "motoflex", "--flex", "2", "--substeps", "100"]),
+    ("nao full pipeline, no universal",
+     ["--robot", "nao", "--servo", "motoflex", "--flex", "2", "--substeps", "100", "--no-universal"]),
+    ("titan8 velocity servos", ["--robot", "titan8"]),
+]
+
+
+def bench(args, seconds, solver, extra=()):
+    out = subprocess.run([BINARY, "bench", *args, "--seconds", str(seconds), "--solver", solver, *extra],
+                         check=True, capture_output=True, text=True).stdout
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--seconds", type=float, default=5.0)
+    parser.add_argument("--json")
+    a = parser.parse_args()
+    if not os.path.exists(BINARY):
+        sys.exit("build/motoflex is missing: run scripts/build first")
+
+    samples = {}
+    for _ in range(a.repeats):
+        for name, args in CONFIGS:
+            for solver in ("step", "quick"):
+                r = bench(args, a.seconds, solver)
+                samples.setdefault((name, solver), []).append(r)
+        for solver in ("step",):
+            one = bench(CONFIGS[2][1], a.seconds, solver, ["--rollouts", "4", "--threads", "1"])
+            two = bench(CONFIGS[2][1], a.seconds, solver, ["--rollouts", "4", "--threads", "2"])
+            samples.setdefault(("threads", solver), []).append(one["wall_s"] / two["wall_s"])
+
+    rows = []
+    print(f"{'configuration':62s} {'solver':6s} {'steps/s':>9s} {'x realtime':>10s}  end")
+    for name, _ in CONFIGS:
+        for solver in ("step", "quick"):
+            runs = samples[(name, solver)]
+            sps = statistics.median(r["steps_per_s"] for r in runs)
+            rows.append({"configuration": name, "solver": solver, "steps_per_s": sps,
+                         "realtime_factor": sps / 1000.0, "end": runs[0]["end"]})
+            print(f"{name:62s} {solver:6s} {sps:9.0f} {sps / 1000.0:10.1f}  {runs[0]['end']}")
+    speedup = statistics.median(samples[("threads", "step")])
+    print(f"4 rollouts of the full nao pipeline on 2 threads vs 1 thread: speed-up {speedup:.2f}x "
+          f"(median of {a.repeats})")
+    if a.json:
+        with open(a.json, "w") as f:
+            json.dump({"rows": rows, "speedup_4_rollouts_2_threads": speedup}, f, indent=2)
+
+
+if __name__ == "__main__":
+    main()
