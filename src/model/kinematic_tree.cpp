@@ -2,13 +2,13 @@
 
 #include <console_bridge/console.h>
 
+#include <urdf_parser/urdf_parser.h>
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
-#include <urdf_parser/urdf_parser.h>
 
 #include "motoflex/core/error.hpp"
 
@@ -135,8 +135,8 @@ KinematicTree load_urdf_tree(const std::string& urdf_path) {
                          "only <box> collision geometry is supported");
       }
       const auto box = std::dynamic_pointer_cast<urdf::Box>(collision->geometry);
-      out.boxes.push_back({Eigen::Vector3d(box->dim.x, box->dim.y, box->dim.z),
-                           to_isometry(collision->origin)});
+      out.boxes.push_back(
+          {Eigen::Vector3d(box->dim.x, box->dim.y, box->dim.z), to_isometry(collision->origin)});
     }
     link_ids[name] = static_cast<int>(tree.links.size());
     tree.links.push_back(std::move(out));

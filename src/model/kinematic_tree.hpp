@@ -33,8 +33,8 @@ struct TreeJoint {
   int parent_link = -1;
   int child_link = -1;
   Eigen::Isometry3d X_PJ = Eigen::Isometry3d::Identity();  // joint frame in the parent link
-  Eigen::Vector3d axis_J = Eigen::Vector3d::UnitZ();        // unit axis in the joint frame
-  Eigen::Vector3d axis2_J = Eigen::Vector3d::UnitX();       // second bending axis (flex only)
+  Eigen::Vector3d axis_J = Eigen::Vector3d::UnitZ();       // unit axis in the joint frame
+  Eigen::Vector3d axis2_J = Eigen::Vector3d::UnitX();      // second bending axis (flex only)
   double lower_rad = 0.0;
   double upper_rad = 0.0;
   bool limited = false;

@@ -14,6 +14,12 @@ namespace motoflex::detail {
 // Every name a robot.yaml may declare for this model (any servo kind).
 std::set<std::string> known_parameter_names(const RobotModel& model);
 
+// Parameters of the model effects (encoder offset and scale, Stribeck and load-dependent
+// friction, motor-resistance drift, supply sag, sensor realism) with neutral defaults: with
+// these values an effect is absent. The loader adds every one a robot.yaml does not declare,
+// so any robot can switch an effect on by giving its parameters a value.
+std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model);
+
 // The names a servo kind reads (plus the flex, contact, world and sensor names every rollout
 // reads), in a stable order.
 std::vector<std::string> required_parameter_names(const RobotModel& model, ServoKind servo);

@@ -127,8 +127,9 @@ void apply_parameter_json_text(const std::string& text, const std::string& sourc
     const auto index = set.registry().find(name);
     if (!index) {
       const std::string hint = set.registry().closest_name(name);
-      throw InputError(source, 0, name,
-                       "unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+      throw InputError(
+          source, 0, name,
+          "unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
     }
     if (!value.is_number()) throw InputError(source, 0, name, "expected a number");
     const double number = value.get<double>();

@@ -56,9 +56,8 @@ struct RobotYaml {
 
 RobotYaml read_robot_yaml(const YamlValue& root) {
   root.require_keys_within({"name", "urdf", "root_link", "fixed_base", "torso_link", "servo",
-                            "actuated_joints", "held_joints", "universal_joints",
-                            "flexible_links", "feet", "fall", "initial_clearance_m",
-                            "stand_pose", "parameters"});
+                            "actuated_joints", "held_joints", "universal_joints", "flexible_links",
+                            "feet", "fall", "initial_clearance_m", "stand_pose", "parameters"});
   RobotYaml out;
   out.name = root.at("name").as_string();
   out.urdf_path = root.resolve_path(root.at("urdf").as_string());
@@ -67,7 +66,8 @@ RobotYaml read_robot_yaml(const YamlValue& root) {
   out.fixed_base = root.get_bool("fixed_base", false);
   const YamlValue servo = root.at("servo");
   const auto kind = parse_servo_kind(servo.as_string());
-  if (!kind) servo.fail("unknown servo '" + servo.as_string() + "' (motoflex|velocity|ideal|bench)");
+  if (!kind)
+    servo.fail("unknown servo '" + servo.as_string() + "' (motoflex|velocity|ideal|bench)");
   out.servo = *kind;
   for (const YamlValue& item : root.at("actuated_joints").items()) {
     item.require_keys_within({"joint", "group"});
@@ -183,7 +183,7 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
   const auto X_WL = detail::link_poses(tree, build_angles);
 
   LinkGroups groups(tree.links.size());
-  std::set<int> merged_second_joints;  // second joint of each universal pair (if merged)
+  std::set<int> merged_second_joints;   // second joint of each universal pair (if merged)
   std::map<int, int> universal_second;  // first joint → second joint
   for (std::size_t j = 0; j < tree.joints.size(); ++j) {
     const auto& joint = tree.joints[j];
@@ -218,7 +218,8 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
   std::map<int, int> body_of_group;
   std::vector<int> order{tree.root_link};
   for (std::size_t i = 0; i < order.size(); ++i) {
-    for (const int j : tree.links[order[i]].child_joints) order.push_back(tree.joints[j].child_link);
+    for (const int j : tree.links[order[i]].child_joints)
+      order.push_back(tree.joints[j].child_link);
   }
   const std::set<std::string> feet(spec.feet.begin(), spec.feet.end());
   for (const int link : order) {
@@ -247,20 +248,22 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
     }
     body.is_static = is_static;
     body.mass_kg = mass;
-    body.com_W0_m = mass > 0.0 ? Eigen::Vector3d(first_moment / mass)
-                               : Eigen::Vector3d(X_WL[tree.link_index(body.links.front())].translation());
+    body.com_W0_m = mass > 0.0
+                        ? Eigen::Vector3d(first_moment / mass)
+                        : Eigen::Vector3d(X_WL[tree.link_index(body.links.front())].translation());
     for (const auto& name : body.links) {
       const int l = tree.link_index(name);
       const auto& link = tree.links[l];
       const Eigen::Matrix3d R = X_WL[l].linear();
-      body.inertia_kg_m2 += R * link.inertia_kg_m2 * R.transpose() +
-                            detail::parallel_axis(link.mass_kg, X_WL[l] * link.com_L_m - body.com_W0_m);
+      body.inertia_kg_m2 +=
+          R * link.inertia_kg_m2 * R.transpose() +
+          detail::parallel_axis(link.mass_kg, X_WL[l] * link.com_L_m - body.com_W0_m);
       const std::string base_name = name.substr(0, name.find('#'));
       for (const auto& box : link.boxes) {
         Eigen::Isometry3d X_WB = Eigen::Isometry3d::Identity();
         X_WB.translation() = body.com_W0_m;
-        body.boxes.push_back({name, box.size_m, X_WB.inverse() * X_WL[l] * box.X_LG,
-                              feet.count(base_name) > 0});
+        body.boxes.push_back(
+            {name, box.size_m, X_WB.inverse() * X_WL[l] * box.X_LG, feet.count(base_name) > 0});
       }
     }
   }
@@ -353,6 +356,9 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
       value.fail("default must lie within [lower, upper]");
     }
     model.parameters.add({name, unit_from_parameter_name(name), triple[0], triple[1], triple[2]});
+  }
+  for (const auto& spec : detail::effect_parameter_specs(model)) {
+    if (!model.parameters.contains(spec.name)) model.parameters.add(spec);
   }
   for (const auto& name : required_parameters(model, model.default_servo)) {
     if (!model.parameters.contains(name)) {

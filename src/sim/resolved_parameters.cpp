@@ -25,6 +25,22 @@ class Reader {
   ServoKind servo_;
 };
 
+JointFrictionParams read_friction(const Reader& get, const std::string& joint) {
+  JointFrictionParams friction;
+  friction.coulomb_nm = get(joint + "friction_nm");
+  friction.viscous_nm_s_per_rad = get(joint + "viscous_nm_s_per_rad");
+  friction.stribeck_nm = get(joint + "stribeck_nm");
+  friction.stribeck_velocity_rad_s = get(joint + "stribeck_velocity_rad_s");
+  friction.load_coefficient = get(joint + "load_friction");
+  if (friction.coulomb_nm < 0.0 || friction.viscous_nm_s_per_rad < 0.0 ||
+      friction.stribeck_nm < 0.0 || !(friction.stribeck_velocity_rad_s > 0.0) ||
+      friction.load_coefficient < 0.0) {
+    throw ModelError("friction parameters of " + joint + "* must not be negative (" + joint +
+                     "stribeck_velocity_rad_s > 0)");
+  }
+  return friction;
+}
+
 bool has_flex_joints(const RobotModel& model) {
   for (const auto& j : model.joints) {
     if (j.kind == JointKind::kFlex) return true;
@@ -58,7 +74,7 @@ ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSe
         a.gear.spring_nm_per_rad = get(gear + "spring_nm_per_rad");
         a.gear.mass_kg_m2 = get(gear + "mass_kg_m2");
         a.gear.viscous_nm_s_per_rad = get(gear + "viscous_nm_s_per_rad");
-        a.friction = {get(joint + "friction_nm"), get(joint + "viscous_nm_s_per_rad")};
+        a.friction = read_friction(get, joint);
         // Algorithm 1's B·ω_m reaches the joint as B·σ²·ω. Applied as an explicit torque it is
         // unstable at 1 ms on light links (B·σ²·dt/I > 2 at the Nao's ankles), so it joins the
         // joint's friction budget, which ODE applies implicitly through the zero-velocity motor
@@ -81,14 +97,18 @@ ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSe
         a.bench.supply_v = get("bench.supply_v");
         a.bench.torque_constant_nm_per_a = get("bench.Kt_nm_per_a");
         a.bench.resistance_ohm = get("bench.R_ohm");
-        a.friction = {get(joint + "friction_nm"), get(joint + "viscous_nm_s_per_rad")};
+        a.friction = read_friction(get, joint);
         break;
     }
-    if (a.friction.coulomb_nm < 0.0 || a.friction.viscous_nm_s_per_rad < 0.0) {
-      throw ModelError("joint friction of " + spec.name + " must not be negative");
-    }
+    a.encoder_scale = get(joint + "encoder_scale");
+    a.encoder_offset_rad = get(joint + "encoder_offset_rad");
   }
   if (servo == ServoKind::kIdeal) out.ideal.torque_max_nm = get("ideal.torque_max_nm");
+  if (servo == ServoKind::kMotoflex) {
+    out.motor_resistance_drift_per_s = get("motor.R_drift_per_s");
+    out.supply_sag_ohm = get("motor.supply_sag_ohm");
+    if (out.supply_sag_ohm < 0.0) throw ModelError("motor.supply_sag_ohm must not be negative");
+  }
   if (servo == ServoKind::kBench) {
     out.bench_load = {get("bench.mass_kg"), get("bench.length_m"), get("bench.armature_kg_m2")};
     if (!(out.bench_load.mass_kg > 0.0) || !(out.bench_load.length_m > 0.0) ||

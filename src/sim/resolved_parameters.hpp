@@ -22,6 +22,10 @@ struct ActuatorParameters {
   JointFrictionParams friction;
   VelocityServoParams velocity;
   BenchServoParams bench;
+  // What the logging encoder reports: scale·θ + offset (then delay, quantisation, noise). The
+  // servo regulates the true angle; these are calibration errors of the reported angle.
+  double encoder_scale = 1.0;
+  double encoder_offset_rad = 0.0;
 };
 
 struct FlexParameters {
@@ -52,6 +56,10 @@ struct ResolvedParameters {
   double world_cfm = 1e-10;
   EncoderParams encoder;
   BenchLoad bench_load;
+  // Effects on the motors (motoflex servo): R(t) = R·(1 + drift·t) as the windings heat up, and
+  // a battery with internal resistance: U_bat(t) = U_bat − R_int·Σ|I| over all motors.
+  double motor_resistance_drift_per_s = 0.0;
+  double supply_sag_ohm = 0.0;
 };
 
 // Reads what `servo` needs (plus flex, contact, world and sensor values). Throws ModelError

@@ -20,7 +20,7 @@ namespace motoflex {
 namespace {
 
 constexpr int kMaxContactsPerFoot = 4;
-constexpr double kMaxLinearSpeed_m_s = 50.0;    // beyond this a legged robot has diverged
+constexpr double kMaxLinearSpeed_m_s = 50.0;  // beyond this a legged robot has diverged
 constexpr double kMaxAngularSpeed_rad_s = 500.0;
 constexpr std::uint64_t kEncoderNoisePurpose = 0x656e636f646572ULL;  // "encoder"
 
@@ -57,6 +57,8 @@ const char* to_string(RolloutEnd end) {
       return "diverged";
     case RolloutEnd::kModelError:
       return "model_error";
+    case RolloutEnd::kStoppedEarly:
+      return "stopped_early";
   }
   return "?";
 }
@@ -83,19 +85,24 @@ struct Rollout::Impl {
   std::vector<GeomRef> foot_geoms;
   std::vector<GeomRef> other_geoms;
 
-  std::vector<detail::OdeAxis> axes;           // per actuator
+  std::vector<detail::OdeAxis> axes;                 // per actuator
   std::vector<double> joint_torque1, joint_torque2;  // per model joint, accumulated each step
-  std::vector<std::size_t> flex_joints;        // model joint indices
-  double flex_velocity_gain = 0.0;             // ERP/h of the flex springs
+  std::vector<std::size_t> flex_joints;              // model joint indices
+  double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs
   std::vector<Pid> pids;
   std::vector<DcMotor> motors;
   std::vector<GearTrain> gears;
   std::vector<JointEncoder> encoders;
   std::vector<double> applied_torque_nm;
   dContact contact_template{};
+  double elapsed_s = 0.0;  // since the rollout was created (settling included)
+  bool motor_operating_point_varies = false;
 
   Impl(const RobotModel& m, const ParameterSet& values, const RolloutOptions& o)
-      : model(m), options(o), params(detail::resolve_parameters(m, values, o.servo)) {}
+      : model(m), options(o), params(detail::resolve_parameters(m, values, o.servo)) {
+    motor_operating_point_varies =
+        params.motor_resistance_drift_per_s != 0.0 || params.supply_sag_ohm != 0.0;
+  }
 
   ~Impl() {
     if (world != nullptr) dWorldSetStepThreadingImplementation(world, nullptr, nullptr);
@@ -116,6 +123,7 @@ struct Rollout::Impl {
   void collide_feet();
   std::optional<std::string> fall_reason(const Rollout& self) const;
   bool diverged(std::string& detail) const;
+  double encoder_input(std::size_t actuator) const;  // what the encoder senses now
 };
 
 void Rollout::Impl::build_world() {
@@ -314,11 +322,26 @@ void Rollout::Impl::place(const std::vector<double>& pose_rad) {
     dBodySetLinearVel(bodies[b], 0.0, 0.0, 0.0);
     dBodySetAngularVel(bodies[b], 0.0, 0.0, 0.0);
   }
-  for (std::size_t i = 0; i < encoders.size(); ++i) encoders[i].reset(axes[i].angle_rad());
+  for (std::size_t i = 0; i < encoders.size(); ++i) encoders[i].reset(encoder_input(i));
+}
+
+double Rollout::Impl::encoder_input(std::size_t i) const {
+  const auto& p = params.actuators[i];
+  return p.encoder_scale * axes[i].angle_rad() + p.encoder_offset_rad;
 }
 
 void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) {
   const std::size_t n = axes.size();
+  // Motor effects: winding heating (R drift) and battery sag from last step's currents.
+  double supply_now_v = 0.0;
+  double resistance_scale = 1.0;
+  if (motor_operating_point_varies) {
+    double total_current_a = 0.0;
+    for (const DcMotor& motor : motors) total_current_a += std::abs(motor.current_a());
+    supply_now_v = std::max(
+        0.0, params.actuators.front().motor.supply_v - params.supply_sag_ohm * total_current_a);
+    resistance_scale = std::max(1e-3, 1.0 + params.motor_resistance_drift_per_s * elapsed_s);
+  }
   std::fill(joint_torque1.begin(), joint_torque1.end(), 0.0);
   std::fill(joint_torque2.begin(), joint_torque2.end(), 0.0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -330,10 +353,13 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
       case ServoKind::kMotoflex: {
         const auto& p = params.actuators[i];
         // seed 001, Algorithm 1 (PID → clamp → RL → K_t, B·ω_m) then Algorithm 2 (gear).
+        if (motor_operating_point_varies) {
+          motors[i].set_operating_point(supply_now_v, p.motor.resistance_ohm * resistance_scale);
+        }
         const double volts = pids[i].update(now_rad[i] - q);
         const double motor_torque = motors[i].update(volts, w * p.gear.ratio);
         torque = gears[i].update(motor_torque);
-        const MotorCommand friction = joint_friction(p.friction, w);
+        const MotorCommand friction = joint_friction(p.friction, w, torque);
         axis.set_motor(friction.velocity_rad_s, friction.fmax_nm);
         break;
       }
@@ -352,7 +378,7 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
       case ServoKind::kBench: {
         const auto& p = params.actuators[i];
         torque = bench_servo_torque_nm(p.bench, now_rad[i], q, w, true);
-        const MotorCommand friction = joint_friction(p.friction, w);
+        const MotorCommand friction = joint_friction(p.friction, w, torque);
         axis.set_motor(friction.velocity_rad_s, friction.fmax_nm);
         break;
       }
@@ -376,7 +402,8 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
 void Rollout::Impl::apply_flex_springs() {
   for (const std::size_t j : flex_joints) {
     dJointID joint = joints[j];
-    dJointSetUniversalParam(joint, dParamVel, -flex_velocity_gain * dJointGetUniversalAngle1(joint));
+    dJointSetUniversalParam(joint, dParamVel,
+                            -flex_velocity_gain * dJointGetUniversalAngle1(joint));
     dJointSetUniversalParam(joint, dParamVel2,
                             -flex_velocity_gain * dJointGetUniversalAngle2(joint));
   }
@@ -446,7 +473,9 @@ Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
 
 Rollout::~Rollout() = default;
 
-std::size_t Rollout::joints() const { return impl_->axes.size(); }
+std::size_t Rollout::joints() const {
+  return impl_->axes.size();
+}
 
 bool Rollout::step(const double* command_now_rad, const double* command_next_rad) {
   if (end_ != RolloutEnd::kCompleted) return false;
@@ -466,7 +495,8 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
     return false;
   }
   time_s_ += s.options.dt_s;
-  for (std::size_t i = 0; i < s.encoders.size(); ++i) s.encoders[i].push(s.axes[i].angle_rad());
+  s.elapsed_s = time_s_;
+  for (std::size_t i = 0; i < s.encoders.size(); ++i) s.encoders[i].push(s.encoder_input(i));
   if (s.diverged(end_detail_)) {
     end_ = RolloutEnd::kDiverged;
     return false;
@@ -487,7 +517,9 @@ double Rollout::joint_angle_rad(std::size_t actuator) const {
 double Rollout::joint_rate_rad_s(std::size_t actuator) const {
   return impl_->axes.at(actuator).rate_rad_s();
 }
-double Rollout::encoder_rad(std::size_t actuator) { return impl_->encoders.at(actuator).read(); }
+double Rollout::encoder_rad(std::size_t actuator) {
+  return impl_->encoders.at(actuator).read();
+}
 double Rollout::actuator_torque_nm(std::size_t actuator) const {
   return impl_->applied_torque_nm.at(actuator);
 }
@@ -517,8 +549,14 @@ double Rollout::torso_tilt_rad() const {
   return std::acos(std::clamp(R(2, 2), -1.0, 1.0));
 }
 
-dWorldID Rollout::world() const { return impl_->world; }
-dBodyID Rollout::body(std::size_t index) const { return impl_->bodies.at(index); }
-dJointID Rollout::joint(std::size_t index) const { return impl_->joints.at(index); }
+dWorldID Rollout::world() const {
+  return impl_->world;
+}
+dBodyID Rollout::body(std::size_t index) const {
+  return impl_->bodies.at(index);
+}
+dJointID Rollout::joint(std::size_t index) const {
+  return impl_->joints.at(index);
+}
 
 }  // namespace motoflex

@@ -27,7 +27,8 @@ void record_frame(Rollout& rollout, RolloutResult& result, std::size_t frame,
 }  // namespace
 
 RolloutResult run_rollout(const RobotModel& model, const ParameterSet& parameters,
-                          const CommandTrajectory& commands, const RolloutOptions& options) {
+                          const CommandTrajectory& commands, const RolloutOptions& options,
+                          const FrameObserver& observer) {
   RolloutResult result;
   result.joint_names = model.actuator_names();
   result.frames_requested = commands.frames();
@@ -64,9 +65,17 @@ RolloutResult run_rollout(const RobotModel& model, const ParameterSet& parameter
   std::size_t step = 0;
   while (rollout->end() == RolloutEnd::kCompleted) {
     const double t = step * options.dt_s;  // time since the trajectory start, before this step
+    bool stop = false;
     while (frame < commands.frames() && commands.time_s(frame) - start <= t + half_step) {
       record_frame(*rollout, result, frame, commands, options.record_torques);
+      if (observer && !observer(result, frame)) stop = true;
       ++frame;
+      if (stop) break;
+    }
+    if (stop) {
+      result.end = RolloutEnd::kStoppedEarly;
+      result.end_time_s = step * options.dt_s;
+      return result;
     }
     if (frame >= commands.frames()) break;
     commands.sample(start + t, now.data(), hint_now);

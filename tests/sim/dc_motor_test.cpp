@@ -86,5 +86,30 @@ TEST(DcMotorTest, RejectsInvalidParameters) {
   EXPECT_THROW(DcMotor(params, 1e-3), std::invalid_argument);
 }
 
+TEST(DcMotorTest, OperatingPointChangesStallTorqueAndTimeConstant) {
+  DcMotorParams params;
+  params.viscous_nm_s_per_rad = 0.0;
+  const double dt = 1e-5;
+  DcMotor motor(params, dt);
+  // A heated winding (R × 1.2) and a sagging battery (21.6 → 20 V).
+  const double hot_ohm = params.resistance_ohm * 1.2;
+  motor.set_operating_point(20.0, hot_ohm);
+  for (int k = 0; k < 20000; ++k) motor.update(100.0, 0.0);
+  EXPECT_NEAR(motor.update(100.0, 0.0),
+              20.0 / hot_ohm * params.stiffness * params.torque_constant_nm_per_a, 1e-12);
+  EXPECT_NEAR(motor.current_a(), 20.0 / hot_ohm, 1e-12);
+  // The RL time constant follows the new resistance: after L/R_hot the lag reached 1 − 1/e.
+  motor.set_resistor_voltage_v(0.0);
+  const int steps = static_cast<int>(std::lround(params.inductance_h / hot_ohm / dt));
+  double u_r = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    motor.update(10.0, 0.0);
+    u_r = motor.resistor_voltage_v();
+  }
+  EXPECT_NEAR(u_r, 10.0 * (1.0 - std::exp(-steps * dt * hot_ohm / params.inductance_h)), 1e-9);
+  EXPECT_THROW(motor.set_operating_point(20.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(motor.set_operating_point(-1.0, 6.0), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace motoflex

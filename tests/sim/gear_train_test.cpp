@@ -15,7 +15,7 @@ namespace {
 
 constexpr double kDt = 1e-3;
 
-// MoToFlex-like values: ω = sqrt(D/m) = 1.28e5 rad/s, so a 1 ms step needs >= 68 substeps.
+// MoToFlex-like values: ω = sqrt(D/m) = 1.28e5 rad/s (ω·dt = 128 for a 1 ms step).
 GearParams motoflex_gear() {
   return GearParams{.ratio = 130.85,
                     .backlash_rad = 1.05e-5,
@@ -81,12 +81,12 @@ TEST(GearTrainTest, NoTorquePassesWhileTheMassCrossesTheBacklash) {
 
 TEST(GearTrainTest, BounceOffTheHullIsElasticWithFineSubsteps) {
   // Without friction the stiff spring (contact ≈ π/ω = 25 µs) throws the mass back with the
-  // speed it arrived with, and the step carries the bounce's impulse 2·m_g·v. With N = 100
-  // (2.5 substeps per contact) the bounce in this case loses 15 % of its speed; other phases
-  // gain, which is what keeps coarse-substep rattles alive (see the report).
+  // speed it arrived with, and the step carries the bounce's impulse 2·m_g·v. The implicit
+  // contact spring loses about (ω·Δt_g)² of the energy per substep in contact, so the bounce
+  // is elastic only once the contact is resolved finely: N = 400000 gives ω·Δt_g = 3.2e-4.
   const BacklashCrossing crossing;
   const GearParams& params = crossing.params;
-  GearTrain gear(params, kDt, 4000);
+  GearTrain gear(params, kDt, 400000);
   gear.set_state(0.0, 0.0);
   for (int k = 0; k < crossing.crossing_step; ++k) gear.update(crossing.joint_nm / params.ratio);
   const double bounce_output_nm = gear.update(crossing.joint_nm / params.ratio);
@@ -97,31 +97,39 @@ TEST(GearTrainTest, BounceOffTheHullIsElasticWithFineSubsteps) {
               0.02 * 2.0 * params.mass_kg_m2 * v);
 }
 
-TEST(GearTrainTest, InstantaneousSpringTorqueOutsideTheHull) {
-  // With one substep the output is the spring torque at the starting position: D·(p − l_h)
-  // above the hull, D·p below it, zero inside. The time step keeps ω·Δt < 1.9.
+TEST(GearTrainTest, CoarseSubstepsMakeImpactsInelasticNotEnergetic) {
+  // With 100 substeps a contact lasts 2.5 substeps; the implicit spring must never return the
+  // mass faster than it arrived (no numerical energy gain).
+  const BacklashCrossing crossing;
+  const GearParams& params = crossing.params;
+  GearTrain gear(params, kDt, 100);
+  gear.set_state(0.0, 0.0);
+  for (int k = 0; k <= crossing.crossing_step; ++k) gear.update(crossing.joint_nm / params.ratio);
+  EXPECT_LE(std::abs(gear.mass_velocity_rad_s()), crossing.crossing_speed_rad_s * 1.001);
+}
+
+TEST(GearTrainTest, OutputIsTheSpringTorqueAtTheNewPosition) {
+  // With one substep the output is the spring torque where the substep ends: D·(p − l_h) above
+  // the hull, D·p below it, zero inside.
   const GearParams params = motoflex_gear();
   const double dt_s = 1e-5;
   GearTrain gear(params, dt_s, 1);
   const double l_h = params.backlash_rad;
   const double d_g = params.spring_nm_per_rad;
   for (double position_rad : {l_h + 2e-7, l_h + 1e-9, -3e-7, -1e-9, 0.0, 0.3 * l_h, l_h}) {
-    gear.set_state(position_rad, 0.0);
-    const double expected_nm = position_rad > l_h   ? d_g * (position_rad - l_h)
-                               : position_rad < 0.0 ? d_g * position_rad
-                                                    : 0.0;
-    EXPECT_NEAR(gear.update(0.0), expected_nm, 1e-12 * std::max(1.0, std::abs(expected_nm)))
-        << "p = " << position_rad;
+    for (double motor_nm : {0.0, 5.0 / params.ratio, -5.0 / params.ratio}) {
+      gear.set_state(position_rad, 0.0);
+      const double output_nm = gear.update(motor_nm);
+      const double p = gear.mass_position_rad();
+      const double expected_nm = p > l_h ? d_g * (p - l_h) : p < 0.0 ? d_g * p : 0.0;
+      EXPECT_NEAR(output_nm, expected_nm, 1e-9 * std::max(1.0, std::abs(expected_nm)))
+          << "p0 = " << position_rad << ", T_M = " << motor_nm;
+    }
   }
-  // After an update, the next output is the spring torque at the new position, here pushed
-  // further into contact by a drive torque.
-  gear.set_state(l_h + 1e-7, 0.0);
-  const double motor_nm = 5.0 / params.ratio;
-  gear.update(motor_nm);
-  const double new_position_rad = gear.mass_position_rad();
-  ASSERT_GT(new_position_rad, l_h + 1e-7);
-  const double next_expected_nm = d_g * (new_position_rad - l_h);
-  EXPECT_NEAR(gear.update(motor_nm), next_expected_nm, 1e-12 * std::abs(next_expected_nm));
+  // Inside the hull with no drive nothing moves and nothing passes.
+  gear.set_state(0.3 * l_h, 0.0);
+  EXPECT_EQ(gear.update(0.0), 0.0);
+  EXPECT_EQ(gear.mass_position_rad(), 0.3 * l_h);
 }
 
 TEST(GearTrainTest, SettledGearPassesTheHeldTorque) {
@@ -145,18 +153,17 @@ TEST(GearTrainTest, SettledGearPassesTheHeldTorque) {
 }
 
 TEST(GearTrainTest, DampedStepResponseConvergesToRatioTimesMotorTorque) {
-  // B_g/m_g = 100/s: the rattle in the backlash and the spring ringing die out within ~0.3 s.
-  // Starting mid-hull the mass must first cross the hull and rattle; that settles only with
-  // fine substeps (N = 1000, ω·Δt_g = 0.13; see the report on coarse substeps). Starting in
-  // contact (1.5 → 2 N·m) the mass never leaves the spring and N = 100 settles too.
+  // B_g/m_g = 100/s: the rattle in the backlash and the spring ringing die out within ~0.3 s,
+  // for fine and coarse substep counts alike (the implicit contact spring cannot pump energy).
   const GearParams params = motoflex_gear();
   struct Case {
     int substeps;
     double start_nm;
     double joint_nm;
   };
-  for (const Case& c : {Case{1000, 0.0, 1.96}, Case{1000, -2.0, 2.0}, Case{1000, 0.0, -0.3},
-                        Case{100, 1.5, 2.0}, Case{100, -1.5, -2.0}}) {
+  for (const Case& c :
+       {Case{1000, 0.0, 1.96}, Case{1000, -2.0, 2.0}, Case{1000, 0.0, -0.3}, Case{100, 0.0, 1.96},
+        Case{100, -2.0, 2.0}, Case{100, 1.5, 2.0}, Case{100, -1.5, -2.0}, Case{10, 0.0, 1.96}}) {
     GearTrain gear(params, kDt, c.substeps);
     gear.settle_at(c.start_nm);
     double output_nm = 0.0;
@@ -167,12 +174,33 @@ TEST(GearTrainTest, DampedStepResponseConvergesToRatioTimesMotorTorque) {
   }
 }
 
-TEST(GearTrainTest, TorqueOverATransientBalancesTheMassMomentum) {
-  // Summing the substep update m·(v' − v) + B·v'·Δt = (σT_M − T_s)·Δt over a run gives
-  //   Σ T_j·dt = σT_M·t − m·Δv − B·Δp,
-  // exactly in the discrete scheme, for any substep count.
+TEST(GearTrainTest, RattleDiesOutForEveryTorqueAtTheDefaultSubsteps) {
+  // Physically the rattle must die out: the viscous friction only removes energy. With a
+  // symplectic (energy-conserving) substep, N = 100 kept about 30 of these 48 cases rattling
+  // forever (±3 N·m); the implicit contact spring settles all of them, at N = 100 and N = 600.
   const GearParams params = motoflex_gear();
-  for (int substeps : {68, 100, 400}) {
+  for (int substeps : {100, 600}) {
+    for (int i = 0; i < 16; ++i) {
+      const double joint_nm = 0.03 * std::pow(1.45, i);  // 0.03 … 7.5 N·m
+      for (double start_fraction : {0.0, -1.0, 0.5}) {
+        GearTrain gear(params, kDt, substeps);
+        gear.settle_at(start_fraction * joint_nm);
+        double output_nm = 0.0;
+        for (int k = 0; k < 1000; ++k) output_nm = gear.update(joint_nm / params.ratio);
+        EXPECT_NEAR(output_nm, joint_nm, 1e-6 * joint_nm)
+            << substeps << " substeps, " << start_fraction * joint_nm << " -> " << joint_nm;
+      }
+    }
+  }
+}
+
+TEST(GearTrainTest, TorqueOverATransientBalancesTheMassMomentum) {
+  // Summing m·(v' − v) = (σT_M − T_s − B·v')·Δt over a run gives
+  //   Σ T_j·dt = σT_M·t − m·Δv − B·Δp,
+  // exact while the mass stays in contact; at each release the implicit force differs from
+  // the output one by at most one substep's worth, so the balance holds to a small fraction.
+  const GearParams params = motoflex_gear();
+  for (int substeps : {20, 100, 400}) {
     GearTrain gear(params, kDt, substeps);
     gear.settle_at(0.0);
     const double start_rad = gear.mass_position_rad();
@@ -183,7 +211,8 @@ TEST(GearTrainTest, TorqueOverATransientBalancesTheMassMomentum) {
     const double expected_nm_s =
         params.ratio * motor_nm * steps * kDt - params.mass_kg_m2 * gear.mass_velocity_rad_s() -
         params.viscous_nm_s_per_rad * (gear.mass_position_rad() - start_rad);
-    EXPECT_NEAR(impulse_nm_s, expected_nm_s, 1e-12) << substeps << " substeps";
+    EXPECT_NEAR(impulse_nm_s, expected_nm_s, 0.01 * params.ratio * motor_nm * steps * kDt)
+        << substeps << " substeps";
   }
 }
 
@@ -193,63 +222,56 @@ TEST(GearTrainTest, MeanTorqueOfABacklashTransientAgreesAcrossSubstepCounts) {
   // ≈ 0.3 ms) for tens of ms. N = 50 is below the stability limit with these values.
   const GearParams params = motoflex_gear();
   const double joint_nm = 2.0;
-  EXPECT_THROW(GearTrain(params, kDt, 50), ModelError);
   std::vector<double> means;
   for (int substeps : {100, 200, 400, 800}) {
     means.push_back(mean(step_response(params, substeps, 0.0, joint_nm, 20)));
   }
-  // Measured: 2.0044, 1.9955, 1.9997, 2.0027 N·m. The 20 ms mean is fixed by the momentum
-  // balance above up to m·v_end/t, so it agrees to < 1 % even while the individual bounces are
-  // not resolved. It does not shrink ×2 per doubling: the bounce phase after 20 ms is still
-  // scrambled at N = 800 (the per-step torques agree only from N ≈ 6400 on).
+  // The 20 ms mean is fixed by the momentum balance above up to m·v_end/t, so it agrees to
+  // < 1 % even while the individual bounces are not resolved.
   EXPECT_LT(std::abs(means[1] - means[2]), 0.01 * joint_nm);
   for (double m : means) EXPECT_NEAR(m, joint_nm, 0.01 * joint_nm);
 }
 
-TEST(GearTrainTest, PerStepTorqueConvergesInTheSubstepCountInContact) {
-  // A step from 1 to 2 N·m keeps the mass on the spring: a lightly damped linear oscillator
-  // (ζ = 4e-4, 400 periods in 20 ms). Symplectic Euler's frequency error is (ω·Δt_g)²/24, so
-  // once the phase error over the transient is small the per-step torques converge at second
-  // order (measured shrink factors 2.2, 3.8, 4.2 from N = 800 to 6400). Below N ≈ 1600 the
-  // phase is scrambled and the differences stay at ~1 % of the step.
-  const GearParams params = motoflex_gear();
-  std::vector<double> differences;
-  std::vector<double> previous;
-  for (int substeps : {800, 1600, 3200, 6400, 12800}) {
-    const std::vector<double> outputs = step_response(params, substeps, 1.0, 2.0, 20);
-    if (!previous.empty()) {
-      double largest = 0.0;
-      for (std::size_t k = 0; k < outputs.size(); ++k) {
-        largest = std::max(largest, std::abs(outputs[k] - previous[k]));
-      }
-      differences.push_back(largest);
+TEST(GearTrainTest, PerStepTorqueConvergesInTheSubstepCount) {
+  // MoToFlex's gear type A (201.3; ζ = 0.52): a torque reversal from −1 to +2 N·m crosses the
+  // hull and lands on the spring. The implicit scheme is first order, so the per-step torques
+  // converge toward a fine-substep reference as the substep count grows.
+  const GearParams params{.ratio = 201.3,
+                          .backlash_rad = 1.301e-5,
+                          .spring_nm_per_rad = 6.131e6,
+                          .mass_kg_m2 = 1.0808e-3,
+                          .viscous_nm_s_per_rad = 84.37};
+  const std::vector<double> reference = step_response(params, 6400, -1.0, 2.0, 20);
+  auto error_nm = [&](int substeps) {
+    const std::vector<double> outputs = step_response(params, substeps, -1.0, 2.0, 20);
+    double largest = 0.0;
+    for (std::size_t k = 0; k < outputs.size(); ++k) {
+      largest = std::max(largest, std::abs(outputs[k] - reference[k]));
     }
-    previous = outputs;
-  }
-  for (std::size_t i = 1; i < differences.size(); ++i) {
-    EXPECT_LT(differences[i], differences[i - 1] / 2.0) << "doubling " << i;
-  }
-  EXPECT_LT(differences.back(), 1e-3 * 1.0);  // N = 6400 vs 12800: < 0.1 % of the 1 N·m step
+    return largest;
+  };
+  // Measured: 0.043, 0.0058 and 0.000095 N·m for N = 25, 100, 800 (the crossing instant falls
+  // between substeps, so single doublings are not monotone, but the trend is first order).
+  const double coarse = error_nm(25), nominal = error_nm(100), fine = error_nm(800);
+  EXPECT_LT(nominal, 0.01 * 3.0);  // N = 100: within 1 % of the 3 N·m reversal
+  EXPECT_LT(nominal, coarse / 3.0);
+  EXPECT_LT(fine, nominal / 4.0);
 }
 
-TEST(GearTrainTest, UnstableSubstepCountIsAModelError) {
+TEST(GearTrainTest, AnySubstepCountIsStable) {
+  // ω·Δt_g = 128 with a single substep: explicit schemes explode, the implicit spring settles.
   const GearParams params = motoflex_gear();
-  const int minimum = GearTrain::minimum_stable_substeps(params, kDt);
-  const double omega_dt = std::sqrt(params.spring_nm_per_rad / params.mass_kg_m2) * kDt;
-  EXPECT_EQ(minimum, 68);  // ω·dt = 127.9, /1.9 = 67.3
-  EXPECT_LT(omega_dt / minimum, 1.9);
-  EXPECT_GE(omega_dt / (minimum - 1), 1.9);
-  EXPECT_NO_THROW(GearTrain(params, kDt, minimum));
-  try {
-    GearTrain gear(params, kDt, minimum - 1);
-    FAIL() << "expected ModelError";
-  } catch (const ModelError& error) {
-    EXPECT_NE(std::string(error.what()).find("68"), std::string::npos) << error.what();
+  for (int substeps : {1, 3, 50}) {
+    GearTrain gear(params, kDt, substeps);
+    gear.settle_at(0.0);
+    double output_nm = 0.0;
+    for (int k = 0; k < 2000; ++k) {
+      output_nm = gear.update(2.0 / params.ratio);
+      ASSERT_TRUE(std::isfinite(output_nm));
+      ASSERT_LT(std::abs(output_nm), 100.0);
+    }
+    EXPECT_NEAR(output_nm, 2.0, 1e-6) << substeps << " substeps";
   }
-  // A soft or absent spring is stable with one substep.
-  GearParams soft = params;
-  soft.spring_nm_per_rad = 0.0;
-  EXPECT_EQ(GearTrain::minimum_stable_substeps(soft, kDt), 1);
 }
 
 TEST(GearTrainTest, RejectsInvalidParameters) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <stdexcept>
 
 namespace motoflex {
@@ -68,6 +70,21 @@ TEST(ServoLawsTest, JointFrictionBudgetIsCoulombPlusViscous) {
   EXPECT_EQ(command.velocity_rad_s, 0.0);
   EXPECT_DOUBLE_EQ(command.fmax_nm, 0.05 + 0.2 * 1.5);  // symmetric in the direction of motion
   EXPECT_DOUBLE_EQ(joint_friction(params, 1.5).fmax_nm, command.fmax_nm);
+}
+
+TEST(ServoLawsTest, StribeckAndLoadDependentFrictionBudget) {
+  const JointFrictionParams params{.coulomb_nm = 0.1,
+                                   .viscous_nm_s_per_rad = 0.2,
+                                   .stribeck_nm = 0.3,
+                                   .stribeck_velocity_rad_s = 0.05,
+                                   .load_coefficient = 0.1};
+  // At rest the full breakaway torque F_c + F_s holds the joint (plus K_l·|τ|).
+  EXPECT_DOUBLE_EQ(joint_friction(params, 0.0).fmax_nm, 0.4);
+  EXPECT_DOUBLE_EQ(joint_friction(params, 0.0, -2.0).fmax_nm, 0.4 + 0.2);
+  // At v = v_s the Stribeck excess has fallen to F_s/e.
+  EXPECT_DOUBLE_EQ(joint_friction(params, 0.05).fmax_nm, 0.1 + 0.2 * 0.05 + 0.3 / std::exp(1.0));
+  // Far above v_s only Coulomb + viscous remain.
+  EXPECT_NEAR(joint_friction(params, -2.0).fmax_nm, 0.1 + 0.4, 1e-12);
 }
 
 }  // namespace

@@ -23,8 +23,8 @@ struct EncoderParams {
 // stream passed in, so readings are reproducible.
 class JointEncoder {
  public:
-  // Throws std::invalid_argument for physics_dt_s <= 0, negative delay or noise, or
-  // resolution_bits outside 0..32.
+  // Throws std::invalid_argument for physics_dt_s <= 0, negative delay or noise, a delay of
+  // 1e7 physics steps or more, a non-finite offset, or resolution_bits outside 0..32.
   JointEncoder(const EncoderParams& params, double physics_dt_s, RandomStream noise);
 
   // Records the true angle of the physics step that just ended; call once per step.

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,26 +23,32 @@ enum class StepSolver {
 };
 
 struct RolloutOptions {
-  double dt_s = 0.001;             // physics step
+  double dt_s = 0.001;  // physics step
   StepSolver solver = StepSolver::kStep;
-  int quickstep_iterations = 20;   // dWorldQuickStep only
-  int gear_substeps = 100;         // gear sub-steps per physics step (motoflex servo)
+  int quickstep_iterations = 20;  // dWorldQuickStep only
+  int gear_substeps = 100;        // gear sub-steps per physics step (motoflex servo)
   ServoKind servo = ServoKind::kIdeal;
-  double settle_s = 0.0;           // hold the first commanded pose this long before t = 0
-  std::uint64_t seed = 1;          // sensor-noise stream
-  bool stop_on_fall = true;        // end the rollout at the first fall
-  bool record_torques = false;     // fill RolloutResult::joint_torque_nm
+  double settle_s = 0.0;        // hold the first commanded pose this long before t = 0
+  std::uint64_t seed = 1;       // sensor-noise stream
+  bool stop_on_fall = true;     // end the rollout at the first fall
+  bool record_torques = false;  // fill RolloutResult::joint_torque_nm
 };
 
-enum class RolloutEnd { kCompleted, kFell, kDiverged, kModelError };
+enum class RolloutEnd {
+  kCompleted,    // every frame simulated
+  kFell,         // a non-foot body touched the ground, or the torso tilted or dropped too far
+  kDiverged,     // non-finite state, absurd speeds, or an ODE error inside the step
+  kModelError,   // the parameters cannot be simulated (e.g. unstable gear sub-step)
+  kStoppedEarly  // the frame observer asked to stop (e.g. the fit's early termination)
+};
 const char* to_string(RolloutEnd end);
 
 // What one rollout produced, sampled at the frames of the commanded trajectory.
 struct RolloutResult {
   std::vector<std::string> joint_names;
-  std::vector<double> time_s;         // frame times (same as the trajectory's)
-  std::vector<double> commanded_rad;  // frame-major [frame * joints + joint]
-  std::vector<double> measured_rad;   // simulated encoder readings, same layout
+  std::vector<double> time_s;           // frame times (same as the trajectory's)
+  std::vector<double> commanded_rad;    // frame-major [frame * joints + joint]
+  std::vector<double> measured_rad;     // simulated encoder readings, same layout
   std::vector<double> joint_torque_nm;  // actuator torque at each frame (if recorded)
   std::vector<double> imu_roll_rad;
   std::vector<double> imu_pitch_rad;
@@ -50,7 +57,7 @@ struct RolloutResult {
   std::size_t frames_completed = 0;  // T of the fitness: frames before the end or a fall
   RolloutEnd end = RolloutEnd::kCompleted;
   double end_time_s = 0.0;
-  std::string end_detail;            // e.g. "LThigh touched the ground"
+  std::string end_detail;  // e.g. "LThigh touched the ground"
   std::size_t physics_steps = 0;
   std::size_t joints() const { return joint_names.size(); }
 };
@@ -97,10 +104,15 @@ class Rollout {
   std::string end_detail_;
 };
 
+// Called after each frame is recorded (result.frames_completed == frame + 1); returning false
+// stops the rollout with RolloutEnd::kStoppedEarly.
+using FrameObserver = std::function<bool(const RolloutResult& result, std::size_t frame)>;
+
 // Runs a whole rollout: settles on the first commanded pose, then follows the trajectory,
 // sampling the encoders at every trajectory frame. Never throws for a rollout that fails: a
 // ModelError or divergence is reported in the result.
 RolloutResult run_rollout(const RobotModel& model, const ParameterSet& parameters,
-                          const CommandTrajectory& commands, const RolloutOptions& options);
+                          const CommandTrajectory& commands, const RolloutOptions& options,
+                          const FrameObserver& observer = {});
 
 }  // namespace motoflex

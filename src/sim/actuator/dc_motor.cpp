@@ -6,7 +6,7 @@
 
 namespace motoflex {
 
-DcMotor::DcMotor(const DcMotorParams& params, double dt_s) : params_(params) {
+DcMotor::DcMotor(const DcMotorParams& params, double dt_s) : params_(params), dt_s_(dt_s) {
   // Written as !(x > 0) so that NaN is rejected too.
   if (!(dt_s > 0.0)) throw std::invalid_argument("DcMotor: dt_s must be > 0");
   if (!(params.resistance_ohm > 0.0)) {
@@ -17,12 +17,26 @@ DcMotor::DcMotor(const DcMotorParams& params, double dt_s) : params_(params) {
   }
   // The clamp below needs −U_bat <= +U_bat.
   if (!(params.supply_v >= 0.0)) throw std::invalid_argument("DcMotor: supply_v must be >= 0");
+  update_lag_fraction();
+}
+
+void DcMotor::update_lag_fraction() {
   // Seed 001, Algorithm 1, line 5: the RL circuit relaxes toward U with time constant L/R.
   // −expm1(−x) is 1 − exp(−x) without cancellation when dt·R/L is small; L = 0 gives x = ∞
   // and a fraction of exactly 1 (no lag).
-  lag_fraction_ = params.inductance_h == 0.0
+  lag_fraction_ = params_.inductance_h == 0.0
                       ? 1.0
-                      : -std::expm1(-dt_s * params.resistance_ohm / params.inductance_h);
+                      : -std::expm1(-dt_s_ * params_.resistance_ohm / params_.inductance_h);
+}
+
+void DcMotor::set_operating_point(double supply_v, double resistance_ohm) {
+  if (!(resistance_ohm > 0.0)) throw std::invalid_argument("DcMotor: resistance_ohm must be > 0");
+  if (!(supply_v >= 0.0)) throw std::invalid_argument("DcMotor: supply_v must be >= 0");
+  params_.supply_v = supply_v;
+  if (resistance_ohm != params_.resistance_ohm) {
+    params_.resistance_ohm = resistance_ohm;
+    update_lag_fraction();
+  }
 }
 
 double DcMotor::update(double commanded_v, double motor_speed_rad_s) {

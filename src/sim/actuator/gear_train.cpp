@@ -1,7 +1,6 @@
 #include "motoflex/sim/actuator/gear_train.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -10,10 +9,6 @@
 
 namespace motoflex {
 namespace {
-
-// Symplectic Euler on an undamped spring is stable for ω·Δt_g < 2; 1.9 leaves a margin so that
-// the numerical frequency error (which grows without bound as ω·Δt_g → 2) stays moderate.
-constexpr double kStabilityLimit = 1.9;
 
 void validate(const GearParams& params, double dt_s) {
   // Written as !(x > 0) / !(x >= 0) so that NaN is rejected too.
@@ -30,56 +25,56 @@ void validate(const GearParams& params, double dt_s) {
   }
 }
 
-// The one stability predicate; the constructor and minimum_stable_substeps() must agree on it
-// bit for bit, so both call this.
-bool is_stable(const GearParams& params, double dt_s, int substeps) {
-  return std::sqrt(params.spring_nm_per_rad / params.mass_kg_m2) * dt_s / substeps <
-         kStabilityLimit;
-}
-
 }  // namespace
 
 GearTrain::GearTrain(const GearParams& params, double dt_s, int substeps)
     : params_(params), substeps_(substeps), substep_s_(0.0) {
   validate(params, dt_s);
   if (substeps <= 0) throw std::invalid_argument("GearTrain: substeps must be > 0");
-  if (!is_stable(params, dt_s, substeps)) {
-    throw ModelError("GearTrain: " + std::to_string(substeps) +
-                     " substeps per physics step are unstable for this gear spring and mass; "
-                     "need at least " +
-                     std::to_string(minimum_stable_substeps(params, dt_s)));
-  }
   // Seed 001, Algorithm 2, line 2: Δt_g = Δt_s / substeps.
   substep_s_ = dt_s / substeps;
   const double per_mass_s2 = substep_s_ * substep_s_ / params.mass_kg_m2;
-  damping_factor_ = 1.0 / (1.0 + params.viscous_nm_s_per_rad * substep_s_ / params.mass_kg_m2);
-  drive_step_gain_ = params.ratio * per_mass_s2 * damping_factor_;
-  spring_step_gain_ = params.spring_nm_per_rad * per_mass_s2 * damping_factor_;
+  const double damping = params.viscous_nm_s_per_rad * substep_s_ / params.mass_kg_m2;
+  free_factor_ = 1.0 / (1.0 + damping);
+  contact_factor_ = 1.0 / (1.0 + damping + params.spring_nm_per_rad * per_mass_s2);
+  drive_step_gain_ = params.ratio * per_mass_s2;
+  spring_step_gain_ = params.spring_nm_per_rad * per_mass_s2;
   mean_torque_gain_ = params.spring_nm_per_rad / substeps;
 }
 
 double GearTrain::update(double motor_torque_nm) {
-  // The velocity update of Algorithm 2 (lines 10–12, see the header), multiplied through by
-  // Δt_g so the loop carries the position increment s = ṗ_m·Δt_g:
-  //   s ← s·c_B + σ·T_M·Δt_g²/m_g·c_B − D_g·Δt_g²/m_g·c_B·p_h,   c_B = 1/(1 + B_g·Δt_g/m_g)
+  // The velocity update of the header, multiplied through by Δt_g so the loop carries the
+  // position increment s = ṗ_m·Δt_g (line 1, T_M' = σ·T_M, is folded into the drive). A substep
+  // is a contact substep when the mass touches the hull at its start or would touch it at its
+  // end; the spring then acts implicitly from the touched wall e:
+  //   contact: s ← (s + σ·T_M·Δt_g²/m_g − D_g·Δt_g²/m_g·(p_m − e))·c_contact
+  //   free:    s ← (s + σ·T_M·Δt_g²/m_g)·c_free
   //   p_m ← p_m + s
-  // It is symplectic Euler (velocity first, then position with the new velocity) with the
-  // viscous term implicit; the paper's explicit order gains energy on the spring at any Δt_g.
-  // Line 1 (T_M' = σ·T_M) is folded into the drive increment.
+  // so a mass that reaches the wall within a substep is caught there instead of overshooting
+  // deep into the spring (which is what keeps any substep count stable).
   const double drive_step_rad = motor_torque_nm * drive_step_gain_;
   const double backlash_rad = params_.backlash_rad;
   double position_rad = position_rad_;
   double step_rad = velocity_rad_s_ * substep_s_;
   double summed_compression_rad = 0.0;
   for (int i = 0; i < substeps_; ++i) {  // Algorithm 2, line 2
-    // Lines 3–9: for l_h >= 0 at most one term is nonzero (p_m > l_h: p_m − l_h; p_m < 0: p_m;
-    // inside the hull: 0).
-    const double compression_rad =
-        std::max(position_rad - backlash_rad, 0.0) + std::min(position_rad, 0.0);
-    // Line 13 (T_j += T_s·Δt_g/Δt_s); D_g/substeps is applied once after the loop.
-    summed_compression_rad += compression_rad;
-    step_rad = step_rad * damping_factor_ + drive_step_rad - spring_step_gain_ * compression_rad;
+    const double free_step_rad = (step_rad + drive_step_rad) * free_factor_;
+    // Lines 3–9: which wall, if any, the mass touches now or would touch after a free substep.
+    const double probe_rad = position_rad > backlash_rad || position_rad < 0.0
+                                 ? position_rad
+                                 : position_rad + free_step_rad;
+    if (probe_rad > backlash_rad || probe_rad < 0.0) {
+      const double wall_rad = probe_rad > backlash_rad ? backlash_rad : 0.0;
+      step_rad = (step_rad + drive_step_rad - spring_step_gain_ * (position_rad - wall_rad)) *
+                 contact_factor_;
+    } else {
+      step_rad = free_step_rad;
+    }
     position_rad += step_rad;
+    // Line 13 (T_j += T_s·Δt_g/Δt_s) with the spring force where the substep ends; D_g/substeps
+    // is applied once after the loop.
+    summed_compression_rad +=
+        std::max(position_rad - backlash_rad, 0.0) + std::min(position_rad, 0.0);
   }
   position_rad_ = position_rad;
   velocity_rad_s_ = step_rad / substep_s_;
@@ -105,22 +100,6 @@ void GearTrain::settle_at(double joint_torque_nm) {
 void GearTrain::set_state(double position_rad, double velocity_rad_s) {
   position_rad_ = position_rad;
   velocity_rad_s_ = velocity_rad_s;
-}
-
-int GearTrain::minimum_stable_substeps(const GearParams& params, double dt_s) {
-  validate(params, dt_s);
-  const double estimate =
-      std::floor(std::sqrt(params.spring_nm_per_rad / params.mass_kg_m2) * dt_s / kStabilityLimit) +
-      1.0;
-  if (!(estimate < static_cast<double>(INT_MAX) - 2.0)) {
-    throw ModelError("GearTrain: the gear spring is too stiff for any substep count");
-  }
-  // The closed form can be off by one where the ratio rounds; settle it with the predicate the
-  // constructor uses.
-  int substeps = std::max(1, static_cast<int>(estimate));
-  while (substeps > 1 && is_stable(params, dt_s, substeps - 1)) --substeps;
-  while (!is_stable(params, dt_s, substeps)) ++substeps;
-  return substeps;
 }
 
 }  // namespace motoflex

@@ -35,11 +35,17 @@ double bench_servo_torque_nm(const BenchServoParams& params, double commanded_ra
   return kt * voltage_v / params.resistance_ohm - kt * kt * velocity_rad_s / params.resistance_ohm;
 }
 
-MotorCommand joint_friction(const JointFrictionParams& params, double velocity_rad_s) {
+MotorCommand joint_friction(const JointFrictionParams& params, double velocity_rad_s,
+                            double load_torque_nm) {
   // A zero-velocity motor row with a bounded force is ODE's way to express stiction: the joint
   // is held while the holding torque fits in the budget, and slides once it does not.
-  return MotorCommand{0.0,
-                      params.coulomb_nm + params.viscous_nm_s_per_rad * std::abs(velocity_rad_s)};
+  double budget_nm = params.coulomb_nm + params.viscous_nm_s_per_rad * std::abs(velocity_rad_s);
+  if (params.stribeck_nm != 0.0) {
+    const double u = velocity_rad_s / params.stribeck_velocity_rad_s;
+    budget_nm += params.stribeck_nm * std::exp(-u * u);
+  }
+  budget_nm += params.load_coefficient * std::abs(load_torque_nm);
+  return MotorCommand{0.0, budget_nm};
 }
 
 }  // namespace motoflex

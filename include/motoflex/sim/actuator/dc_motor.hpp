@@ -29,12 +29,20 @@ class DcMotor {
   double resistor_voltage_v() const { return resistor_voltage_v_; }
   // Sets the circuit state (e.g. to start in steady state).
   void set_resistor_voltage_v(double volts) { resistor_voltage_v_ = volts; }
+  // Changes the supply voltage and the armature resistance from now on (battery sag, a winding
+  // heating up). Throws std::invalid_argument for R <= 0 or a negative supply.
+  void set_operating_point(double supply_v, double resistance_ohm);
+  // The armature current U_R/R in A.
+  double current_a() const { return resistor_voltage_v_ / params_.resistance_ohm; }
   // The torque at zero speed with the full supply voltage: K_t·U_bat/R·S.
   double stall_torque_nm() const;
   const DcMotorParams& params() const { return params_; }
 
  private:
+  void update_lag_fraction();
+
   DcMotorParams params_;
+  double dt_s_;
   double lag_fraction_;  // 1 − exp(−dt·R/L), computed once
   double resistor_voltage_v_ = 0.0;
 };

@@ -41,14 +41,21 @@ struct BenchServoParams {
 double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
                              double measured_rad, double velocity_rad_s, bool torque_enabled);
 
-// Dry + viscous joint friction as a budget for a zero-velocity ODE motor (seed 001 §2; BAM's
-// clipping model): the motor row holds the joint still with up to
-//   fmax = coulomb_nm + viscous_nm_s_per_rad·|θ̇|
-// so the joint sticks while the other torques stay below fmax and slips above it.
+// Joint friction as a budget for a zero-velocity ODE motor (seed 001 §2; BAM's clipping
+// friction models M1–M4): the motor row holds the joint still with up to
+//   fmax = F_c + F_s·exp(−(θ̇/v_s)²) + K_v·|θ̇| + K_l·|τ_load|
+// so the joint sticks while the other torques stay below fmax and slips above it. F_s is the
+// Stribeck (stiction) excess at rest, v_s its velocity scale; K_l makes the friction grow with
+// the torque the gear transmits (load-dependent friction, bam.md §2d). ODE applies the budget
+// implicitly: it opposes the motion but can never reverse it.
 struct JointFrictionParams {
-  double coulomb_nm = 0.0;
-  double viscous_nm_s_per_rad = 0.0;
+  double coulomb_nm = 0.0;               // F_c
+  double viscous_nm_s_per_rad = 0.0;     // K_v
+  double stribeck_nm = 0.0;              // F_s
+  double stribeck_velocity_rad_s = 0.1;  // v_s (> 0)
+  double load_coefficient = 0.0;         // K_l, N·m of friction per N·m transmitted
 };
-MotorCommand joint_friction(const JointFrictionParams& params, double velocity_rad_s);
+MotorCommand joint_friction(const JointFrictionParams& params, double velocity_rad_s,
+                            double load_torque_nm = 0.0);
 
 }  // namespace motoflex
