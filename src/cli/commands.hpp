@@ -11,5 +11,6 @@ using CommandRunner = std::function<int()>;
 CommandRunner add_simulate_command(CLI::App& app);
 CommandRunner add_record_command(CLI::App& app);
 CommandRunner add_bench_command(CLI::App& app);
+CommandRunner add_import_bam_command(CLI::App& app);
 
 }  // namespace motoflex::cli

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   runners["simulate"] = motoflex::cli::add_simulate_command(app);
   runners["record"] = motoflex::cli::add_record_command(app);
   runners["bench"] = motoflex::cli::add_bench_command(app);
+  runners["import-bam"] = motoflex::cli::add_import_bam_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -22,6 +22,7 @@ namespace {
 constexpr int kMaxContactsPerFoot = 4;
 constexpr double kMaxLinearSpeed_m_s = 50.0;  // beyond this a legged robot has diverged
 constexpr double kMaxAngularSpeed_rad_s = 500.0;
+constexpr double kHeldTorsoClearance_m = 0.1;  // feet above the ground when the torso is held
 constexpr std::uint64_t kEncoderNoisePurpose = 0x656e636f646572ULL;  // "encoder"
 
 void to_ode_rotation(const Eigen::Matrix3d& R, dMatrix3 out) {
@@ -303,7 +304,9 @@ void Rollout::Impl::place(const std::vector<double>& pose_rad) {
   if (!model.fixed_base) {
     const double lowest = lowest_foot_point_z(model, poses);
     if (std::isfinite(lowest)) {
-      const Eigen::Vector3d shift(0.0, 0.0, model.initial_clearance_m - lowest);
+      const double clearance_m =
+          options.hold_torso ? kHeldTorsoClearance_m : model.initial_clearance_m;
+      const Eigen::Vector3d shift(0.0, 0.0, clearance_m - lowest);
       for (auto& X : poses) X.pretranslate(shift);
     }
   }
@@ -323,6 +326,11 @@ void Rollout::Impl::place(const std::vector<double>& pose_rad) {
     dBodySetAngularVel(bodies[b], 0.0, 0.0, 0.0);
   }
   for (std::size_t i = 0; i < encoders.size(); ++i) encoders[i].reset(encoder_input(i));
+  // A held torso is a kinematic body: it does not move, and the joints act on it as on an
+  // infinitely heavy one (the robot hangs from a stand).
+  if (options.hold_torso && bodies[model.root_body] != nullptr) {
+    dBodySetKinematic(bodies[model.root_body]);
+  }
 }
 
 double Rollout::Impl::encoder_input(std::size_t i) const {

@@ -32,6 +32,8 @@ struct RolloutOptions {
   std::uint64_t seed = 1;       // sensor-noise stream
   bool stop_on_fall = true;     // end the rollout at the first fall
   bool record_torques = false;  // fill RolloutResult::joint_torque_nm
+  bool hold_torso = false;      // the root body hangs fixed in the air, feet 0.1 m above the
+                                // ground (excitation motions without ground contact)
 };
 
 enum class RolloutEnd {
