@@ -8,6 +8,7 @@
 #include "motoflex/io/yaml_reader.hpp"
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/keyframe_motion.hpp"
+#include "titan_scenario_motion.hpp"
 
 namespace motoflex {
 namespace {
@@ -29,8 +30,9 @@ CommandTrajectory trajectory_from_log(const RobotModel& model, const std::string
   requirements.joints = model.actuator_names();
   const JointLog log = read_joint_log(path, requirements);
   if (!log.meta.robot.empty() && log.meta.robot != model.name) {
-    throw InputError(joint_log_sidecar_path(path), 0, "robot",
-                     "log is of robot '" + log.meta.robot + "', scenario uses '" + model.name + "'");
+    throw InputError(
+        joint_log_sidecar_path(path), 0, "robot",
+        "log is of robot '" + log.meta.robot + "', scenario uses '" + model.name + "'");
   }
   for (const auto& [name, value] : log.meta.parameters) {
     if (!parameters.registry().contains(name)) {
@@ -75,7 +77,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   RolloutOptions rollout;
   if (const auto physics = root.find("physics")) {
     physics->require_keys_within({"dt_s", "solver", "quickstep_iterations", "gear_substeps",
-                                  "flex_sub_bodies", "universal_joints", "settle_s"});
+                                  "flex_sub_bodies", "universal_joints", "settle_s", "hold_torso"});
     rollout.dt_s = physics->get_double("dt_s", rollout.dt_s);
     if (!(rollout.dt_s > 0.0 && rollout.dt_s <= 0.01)) {
       physics->at("dt_s").fail("must be in (0, 0.01] s");
@@ -95,6 +97,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
     }
     structure.universal_joints = physics->get_bool("universal_joints", true);
     rollout.settle_s = physics->get_double("settle_s", 0.0);
+    rollout.hold_torso = physics->get_bool("hold_torso", false);
     if (rollout.settle_s < 0.0) physics->at("settle_s").fail("must be >= 0");
   }
   if (overrides.solver) rollout.solver = *overrides.solver;
@@ -126,14 +129,10 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
     }
   }
 
-  Scenario scenario{path,
-                    root.get_string("name", std::filesystem::path(path).stem().string()),
-                    model,
-                    ParameterSet(model->parameters),
-                    rollout,
-                    {},
-                    100.0,
-                    {}};
+  Scenario scenario{path,    root.get_string("name", std::filesystem::path(path).stem().string()),
+                    model,   ParameterSet(model->parameters),
+                    rollout, {},
+                    100.0,   {}};
   if (const auto parameters = root.find("parameters")) {
     for (const auto& [name, value] : parameters->entries()) {
       if (!model->parameters.contains(name)) {
@@ -145,13 +144,19 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   }
 
   if (overrides.motion_log) {
-    scenario.commands =
-        trajectory_from_log(*model, *overrides.motion_log, scenario.parameters,
-                            scenario.motion_description);
+    scenario.commands = trajectory_from_log(*model, *overrides.motion_log, scenario.parameters,
+                                            scenario.motion_description);
+  } else if (overrides.motion_optional && !root.has("motion")) {
+    scenario.motion_description = "none";
   } else {
     const YamlValue motion = root.at("motion");
-    motion.require_keys_within({"log", "keyframes", "stand"});
-    if (motion.entries().size() != 1) motion.fail("give exactly one of log, keyframes, stand");
+    motion.require_keys_within(
+        {"log", "keyframes", "stand", "titan_crawl", "titan_updown", "titan_stand"});
+    if (motion.entries().size() != 1) {
+      motion.fail(
+          "give exactly one of log, keyframes, stand, titan_crawl, titan_updown, "
+          "titan_stand");
+    }
     if (const auto log = motion.find("log")) {
       scenario.commands = trajectory_from_log(*model, log->resolve_path(log->as_string()),
                                               scenario.parameters, scenario.motion_description);
@@ -162,9 +167,9 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
       std::vector<Keyframe> frames;
       for (const YamlValue& item : keyframes->at("frames").items()) {
         item.require_keys_within({"t_s", "pose"});
-        Keyframe frame{item.at("t_s").as_double(),
-                       item.find("pose") ? pose_from_yaml(*model, item.at("pose"))
-                                         : model->stand_pose_vector()};
+        Keyframe frame{item.at("t_s").as_double(), item.find("pose")
+                                                       ? pose_from_yaml(*model, item.at("pose"))
+                                                       : model->stand_pose_vector()};
         if (!frames.empty() && !(frame.time_s > frames.back().time_s)) {
           item.at("t_s").fail("keyframe times must strictly increase");
         }
@@ -174,6 +179,11 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
       scenario.commands = keyframe_trajectory(frames, rate_hz);
       scenario.log_rate_hz = rate_hz;
       scenario.motion_description = "keyframes (" + std::to_string(frames.size()) + " frames)";
+    } else if (auto titan = detail::titan_motion_from_yaml(motion, *model, scenario.parameters,
+                                                           scenario.rollout.servo)) {
+      scenario.commands = std::move(titan->commands);
+      scenario.log_rate_hz = titan->rate_hz;
+      scenario.motion_description = titan->description;
     } else {
       const YamlValue stand = motion.at("stand");
       stand.require_keys_within({"duration_s", "rate_hz"});

@@ -19,11 +19,14 @@ namespace motoflex {
 //   servo: motoflex              # optional; the robot's default otherwise
 //   seed: 1                      # sensor-noise stream
 //   physics: {dt_s: 0.001, solver: step, quickstep_iterations: 20, gear_substeps: 100,
-//             flex_sub_bodies: 1, universal_joints: true, settle_s: 0.5}
+//             flex_sub_bodies: 1, universal_joints: true, settle_s: 0.5, hold_torso: false}
 //   motion:                      # exactly one of:
 //     log: ../reference_data/walk.csv        # replay the .cmd columns of a joint log
 //     keyframes: {rate_hz: 100, frames: [{t_s: 0, pose: {LKneePitch: 0.5}}, ...]}
 //     stand: {duration_s: 5, rate_hz: 100}   # hold the robot's stand pose
+//     titan_crawl: {posture: A, periods: 3}  # TITAN-VIII motions of seed 000; options in
+//     titan_updown: {amplitude_m: 0.03}      #   src/io/titan_scenario_motion.hpp
+//     titan_stand: {duration_s: 5}
 //   parameters: {motor.R_ohm: 6.5}           # overrides
 struct Scenario {
   std::string path;
@@ -46,6 +49,7 @@ struct ScenarioOverrides {
   std::optional<int> gear_substeps;
   std::optional<bool> universal_joints;
   std::optional<double> duration_s;            // truncate the motion
+  bool motion_optional = false;  // a scenario without `motion` is accepted (fits bring logs)
 };
 
 // Throws InputError naming file, line and field for anything wrong in the scenario, the robot,
