@@ -55,7 +55,7 @@ def main():
             ax.plot(t, [v * deg for v in cols[joint + ".meas"]], "C0", lw=1.2, label="measured")
         if other and joint + ".meas" in other:
             ax.plot(other["time_s"], [v * deg for v in other[joint + ".meas"]], "C3", lw=1,
-                    label=args.compare.rsplit("/", 1)[-1])
+                    label="simulated (" + args.compare.rsplit("/", 1)[-1] + ")")
         ax.set_ylabel(joint + " [°]", fontsize=8)
         ax.grid(alpha=0.3)
         if i == 0:

@@ -72,6 +72,7 @@ int run(const RecordArgs& args) {
     meta.robot = scenario.model->name;
     meta.rate_hz = scenario.log_rate_hz;
     meta.motion = scenario.motion_description;
+    meta.parameters = scenario.log_parameters;  // experimental conditions, not the truth
     meta.origin = "motoflex record " + std::filesystem::path(args.truth).filename().string() +
                   " (" + recording.name + ", seed " + std::to_string(seed) + ")";
     if (result.end != RolloutEnd::kCompleted) {

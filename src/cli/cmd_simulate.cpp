@@ -14,7 +14,7 @@
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/io/rollout_log.hpp"
 #include "motoflex/io/scenario.hpp"
-#include "plot.hpp"
+#include "motoflex/io/plot_script.hpp"
 
 namespace motoflex::cli {
 namespace {

@@ -11,6 +11,8 @@ using CommandRunner = std::function<int()>;
 CommandRunner add_simulate_command(CLI::App& app);
 CommandRunner add_record_command(CLI::App& app);
 CommandRunner add_bench_command(CLI::App& app);
+CommandRunner add_fit_command(CLI::App& app);
+CommandRunner add_resume_command(CLI::App& app);
 CommandRunner add_import_bam_command(CLI::App& app);
 
 }  // namespace motoflex::cli

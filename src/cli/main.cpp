@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
   runners["simulate"] = motoflex::cli::add_simulate_command(app);
   runners["record"] = motoflex::cli::add_record_command(app);
   runners["bench"] = motoflex::cli::add_bench_command(app);
+  runners["fit"] = motoflex::cli::add_fit_command(app);
+  runners["resume"] = motoflex::cli::add_resume_command(app);
   runners["import-bam"] = motoflex::cli::add_import_bam_command(app);
   try {
     app.parse(argc, argv);

@@ -1,10 +1,10 @@
-#include "plot.hpp"
+#include "motoflex/io/plot_script.hpp"
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
-namespace motoflex::cli {
+namespace motoflex {
 namespace {
 
 std::string quoted(const std::string& text) {
@@ -15,17 +15,17 @@ std::string quoted(const std::string& text) {
 
 }  // namespace
 
-bool plot_joint_log(const std::string& csv_path, const std::string& png_path) {
-  const std::filesystem::path script =
-      std::filesystem::path(MOTOFLEX_SOURCE_DIR) / "scripts" / "plot_log.py";
-  if (!std::filesystem::exists(script)) {
-    std::fprintf(stderr, "motoflex: warning: no plot (missing %s)\n", script.c_str());
+bool run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
+  const std::filesystem::path path =
+      std::filesystem::path(MOTOFLEX_SOURCE_DIR) / "scripts" / script;
+  if (!std::filesystem::exists(path)) {
+    std::fprintf(stderr, "motoflex: warning: no plot (missing %s)\n", path.c_str());
     return false;
   }
-  // Debian's python3 carries matplotlib; a pyenv python on PATH may not.
+  // Debian's python3 carries matplotlib; a pyenv python first on PATH may not.
   const char* python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string command = std::string(python) + " " + quoted(script.string()) + " " +
-                              quoted(csv_path) + " --out " + quoted(png_path);
+  std::string command = std::string(python) + " " + quoted(path.string());
+  for (const auto& argument : arguments) command += " " + quoted(argument);
   if (std::system(command.c_str()) != 0) {
     std::fprintf(stderr, "motoflex: warning: plotting failed (%s)\n", command.c_str());
     return false;
@@ -33,4 +33,14 @@ bool plot_joint_log(const std::string& csv_path, const std::string& png_path) {
   return true;
 }
 
-}  // namespace motoflex::cli
+bool plot_joint_log(const std::string& csv_path, const std::string& png_path,
+                    const std::string& compare_csv) {
+  std::vector<std::string> arguments = {csv_path, "--out", png_path};
+  if (!compare_csv.empty()) {
+    arguments.push_back("--compare");
+    arguments.push_back(compare_csv);
+  }
+  return run_plot_script("plot_log.py", arguments);
+}
+
+}  // namespace motoflex

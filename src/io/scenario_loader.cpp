@@ -8,6 +8,7 @@
 #include "motoflex/io/yaml_reader.hpp"
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/keyframe_motion.hpp"
+#include "nao_scenario_motion.hpp"
 #include "titan_scenario_motion.hpp"
 
 namespace motoflex {
@@ -24,7 +25,8 @@ std::vector<double> pose_from_yaml(const RobotModel& model, const YamlValue& pos
 }
 
 CommandTrajectory trajectory_from_log(const RobotModel& model, const std::string& path,
-                                      ParameterSet& parameters, std::string& description) {
+                                      ParameterSet& parameters, std::string& description,
+                                      std::map<std::string, double>& log_parameters) {
   JointLogRequirements requirements;
   requirements.need_commanded = true;
   requirements.joints = model.actuator_names();
@@ -40,6 +42,7 @@ CommandTrajectory trajectory_from_log(const RobotModel& model, const std::string
                        "unknown parameter for robot " + model.name);
     }
     parameters.set(name, value);
+    log_parameters[name] = value;
   }
   const std::size_t n = model.actuators.size();
   std::vector<double> angles(log.frames() * n);
@@ -132,7 +135,8 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   Scenario scenario{path,    root.get_string("name", std::filesystem::path(path).stem().string()),
                     model,   ParameterSet(model->parameters),
                     rollout, {},
-                    100.0,   {}};
+                    100.0,   {},
+                    {}};
   if (const auto parameters = root.find("parameters")) {
     for (const auto& [name, value] : parameters->entries()) {
       if (!model->parameters.contains(name)) {
@@ -145,21 +149,23 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
 
   if (overrides.motion_log) {
     scenario.commands = trajectory_from_log(*model, *overrides.motion_log, scenario.parameters,
-                                            scenario.motion_description);
+                                            scenario.motion_description, scenario.log_parameters);
   } else if (overrides.motion_optional && !root.has("motion")) {
     scenario.motion_description = "none";
   } else {
     const YamlValue motion = root.at("motion");
     motion.require_keys_within(
-        {"log", "keyframes", "stand", "titan_crawl", "titan_updown", "titan_stand"});
+        {"log", "keyframes", "stand", "walk", "kick", "titan_crawl", "titan_updown",
+         "titan_stand"});
     if (motion.entries().size() != 1) {
       motion.fail(
-          "give exactly one of log, keyframes, stand, titan_crawl, titan_updown, "
+          "give exactly one of log, keyframes, stand, walk, kick, titan_crawl, titan_updown, "
           "titan_stand");
     }
     if (const auto log = motion.find("log")) {
       scenario.commands = trajectory_from_log(*model, log->resolve_path(log->as_string()),
-                                              scenario.parameters, scenario.motion_description);
+                                              scenario.parameters, scenario.motion_description,
+                            scenario.log_parameters);
     } else if (const auto keyframes = motion.find("keyframes")) {
       keyframes->require_keys_within({"rate_hz", "frames"});
       const double rate_hz = keyframes->get_double("rate_hz", 100.0);
@@ -179,6 +185,10 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
       scenario.commands = keyframe_trajectory(frames, rate_hz);
       scenario.log_rate_hz = rate_hz;
       scenario.motion_description = "keyframes (" + std::to_string(frames.size()) + " frames)";
+    } else if (auto nao = detail::nao_motion_from_yaml(motion, *model)) {
+      scenario.commands = std::move(nao->commands);
+      scenario.log_rate_hz = nao->rate_hz;
+      scenario.motion_description = nao->description;
     } else if (auto titan = detail::titan_motion_from_yaml(motion, *model, scenario.parameters,
                                                            scenario.rollout.servo)) {
       scenario.commands = std::move(titan->commands);

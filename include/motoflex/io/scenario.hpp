@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,6 +25,8 @@ namespace motoflex {
 //     log: ../reference_data/walk.csv        # replay the .cmd columns of a joint log
 //     keyframes: {rate_hz: 100, frames: [{t_s: 0, pose: {LKneePitch: 0.5}}, ...]}
 //     stand: {duration_s: 5, rate_hz: 100}   # hold the robot's stand pose
+//     walk: {speed_mm_s: 100, step_duration_s: 1}  # Nao walk / kick; options in
+//     kick: {kick_leg: right}                #   src/io/nao_scenario_motion.hpp
 //     titan_crawl: {posture: A, periods: 3}  # TITAN-VIII motions of seed 000; options in
 //     titan_updown: {amplitude_m: 0.03}      #   src/io/titan_scenario_motion.hpp
 //     titan_stand: {duration_s: 5}
@@ -37,6 +40,10 @@ struct Scenario {
   CommandTrajectory commands;
   double log_rate_hz = 100.0;
   std::string motion_description;
+  // Per-log parameters of a replayed log's sidecar (experimental conditions such as a bench's
+  // mass and gain); they are already applied to `parameters` and travel on into logs recorded
+  // from this scenario.
+  std::map<std::string, double> log_parameters;
 };
 
 // Command-line replacements applied while loading (they win over the file).

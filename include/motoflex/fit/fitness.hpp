@@ -1,0 +1,80 @@
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "motoflex/model/parameters.hpp"
+#include "motoflex/model/robot_model.hpp"
+#include "motoflex/motion/command_trajectory.hpp"
+#include "motoflex/sim/rollout.hpp"
+
+namespace motoflex {
+
+// How simulated and measured angles are compared (seed 001, eq. 2).
+struct FitnessOptions {
+  // F = Σ_t Σ_i w_i (q_real − q_sim)² / T^m per robot. m = 0 would reward falling at once
+  // (fewer frames, less error), m = 1 is the mean error, which still rewards falling as soon
+  // as the walk starts to go wrong; m > 1 makes surviving longer worth more than the error it
+  // adds, so a fit first learns to stay up and then to match the angles (seed 001 §4). Default 2.
+  double m = 2.0;
+  // Frames before this time (s from the log start) are simulated but not scored.
+  double settle_s = 0.0;
+  // Per-joint weights w_i in model actuator order (empty: all 1).
+  std::vector<double> joint_weights;
+};
+
+// One robot of a fit: a commanded motion, what the real robot measured, and how to simulate it.
+struct FitCase {
+  std::string name;                  // log name, for reports
+  CommandTrajectory commands;        // commanded angles (the log's .cmd columns)
+  std::vector<double> measured_rad;  // the log's .meas columns, frame-major, model order
+  RolloutOptions options;
+  // Per-log model parameters (sidecar `parameters`, e.g. a bench's mass), applied on top.
+  std::vector<std::pair<std::size_t, double>> parameter_overrides;
+};
+
+struct CaseScore {
+  double squared_error_rad2 = 0.0;  // Σ_t Σ_i w_i (q_real − q_sim)² over scored frames
+  std::size_t frames = 0;           // T: scored frames simulated before the end or a fall
+  std::size_t frames_requested = 0;
+  double fitness = 0.0;  // squared_error / T^m (+inf for a failed rollout)
+  RolloutEnd end = RolloutEnd::kCompleted;
+  std::string end_detail;
+};
+
+struct FitnessBreakdown {
+  double fitness = 0.0;  // Σ over cases
+  std::vector<CaseScore> cases;
+  bool stopped_early = false;  // the fitness is a lower bound >= the threshold
+};
+
+// Evaluates parameter sets on a fixed list of cases. Immutable after construction; evaluate()
+// may be called from several threads at once.
+class FitnessFunction {
+ public:
+  FitnessFunction(std::shared_ptr<const RobotModel> model, std::vector<FitCase> cases,
+                  FitnessOptions options);
+
+  // Simulates every case in order. If `stop_threshold` is finite, a rollout stops as soon as
+  // Σ_cases (error so far)/T_max^m — a lower bound of the final fitness, since errors only grow
+  // and T <= T_max — reaches it; the result is then that bound (>= the threshold), which ranks
+  // exactly as the full value would against anything below the threshold.
+  FitnessBreakdown evaluate(const ParameterSet& parameters,
+                            double stop_threshold = std::numeric_limits<double>::infinity(),
+                            std::vector<RolloutResult>* rollouts = nullptr) const;
+
+  const RobotModel& model() const { return *model_; }
+  const std::vector<FitCase>& cases() const { return cases_; }
+  const FitnessOptions& options() const { return options_; }
+
+ private:
+  std::shared_ptr<const RobotModel> model_;
+  std::vector<FitCase> cases_;
+  FitnessOptions options_;
+  std::vector<double> weights_;
+  std::vector<std::size_t> first_scored_frame_;  // per case
+};
+
+}  // namespace motoflex

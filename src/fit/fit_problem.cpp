@@ -1,0 +1,107 @@
+#include <atomic>
+#include <stdexcept>
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/fit/fit_runner.hpp"
+#include "motoflex/sim/ode_runtime.hpp"
+#include "motoflex_es/cma_es.hpp"
+#include "motoflex_es/mu_plus_lambda.hpp"
+#include "motoflex_es/nlopt_optimizer.hpp"
+
+namespace motoflex {
+namespace {
+
+motoflex_es::Recombination recombination(const std::string& text) {
+  if (text == "none") return motoflex_es::Recombination::kNone;
+  if (text == "discrete") return motoflex_es::Recombination::kDiscrete;
+  return motoflex_es::Recombination::kIntermediate;
+}
+
+motoflex_es::NloptAlgorithm nlopt_algorithm(const std::string& text) {
+  if (text == "sbplx") return motoflex_es::NloptAlgorithm::kSbplx;
+  if (text == "crs2_lm") return motoflex_es::NloptAlgorithm::kCrs2Lm;
+  if (text == "isres") return motoflex_es::NloptAlgorithm::kIsres;
+  if (text == "esch") return motoflex_es::NloptAlgorithm::kEsch;
+  return motoflex_es::NloptAlgorithm::kBobyqa;
+}
+
+void check_options(bool ok, const std::string& why, const std::string& path) {
+  if (!ok) throw InputError(path, 0, "strategy", why);
+}
+
+}  // namespace
+
+FitProblem::FitProblem(const FitConfig& config) : config_(config) {}
+
+std::size_t FitProblem::dimension() const {
+  return config_.space->dimension();
+}
+
+motoflex_es::Bounds FitProblem::bounds() const {
+  return {config_.space->lower(), config_.space->upper()};
+}
+
+void FitProblem::set_counters(std::uint64_t stopped, std::uint64_t simulated, std::uint64_t saved) {
+  stopped_early_ = stopped;
+  frames_simulated_ = simulated;
+  frames_saved_ = saved;
+}
+
+void FitProblem::evaluate_batch(const std::vector<std::vector<double>>& xs,
+                                std::vector<double>& fitness,
+                                const motoflex_es::EvaluationContext& context) {
+  ensure_ode_ready();  // this may be a worker thread of the evaluator
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    const FitnessBreakdown result =
+        config_.train->evaluate(config_.space->apply(xs[k]), context.stop_threshold);
+    fitness[k] = result.fitness;
+    std::uint64_t simulated = 0, requested = 0;
+    for (const auto& c : result.cases) simulated += c.frames;
+    for (const auto& c : config_.train->cases()) requested += c.commands.frames();
+    // Statistics only (they do not feed back into the run); several threads may add at once.
+    std::atomic_ref<std::uint64_t>(frames_simulated_).fetch_add(simulated);
+    if (result.stopped_early) {
+      std::atomic_ref<std::uint64_t>(stopped_early_).fetch_add(1);
+      std::atomic_ref<std::uint64_t>(frames_saved_).fetch_add(requested - simulated);
+    }
+  }
+}
+
+std::unique_ptr<motoflex_es::Strategy> make_strategy(const FitConfig& config) {
+  const motoflex_es::Bounds bounds{config.space->lower(), config.space->upper()};
+  const StrategyConfig& s = config.strategy;
+  std::string why;
+  if (s.kind == "mu_plus_lambda") {
+    motoflex_es::MuPlusLambdaOptions options;
+    options.mu = s.mu;
+    options.lambda = s.lambda;
+    options.kappa = s.kappa == 0 ? motoflex_es::kUnlimitedLifetime : s.kappa;
+    options.rho = s.rho;
+    options.object_recombination = recombination(s.object_recombination);
+    options.step_recombination = recombination(s.step_recombination);
+    options.initial_step_relative = s.initial_step;
+    options.start_point = config.space->start();
+    options.seed = config.seed;
+    check_options(options.is_valid(&why), why, config.path);
+    return std::make_unique<motoflex_es::MuPlusLambda>(bounds, options);
+  }
+  if (s.kind == "cma_es") {
+    motoflex_es::CmaEsOptions options;
+    options.start_point = config.space->start();
+    options.initial_sigma_relative = s.sigma;
+    options.population_size = s.population;
+    options.max_restarts = s.restarts;
+    options.seed = config.seed;
+    check_options(options.is_valid(&why), why, config.path);
+    return std::make_unique<motoflex_es::CmaEs>(bounds, options);
+  }
+  motoflex_es::NloptOptions options;
+  options.algorithm = nlopt_algorithm(s.algorithm);
+  options.start_point = config.space->start();
+  options.population = s.population;
+  options.seed = config.seed;
+  check_options(options.is_valid(&why), why, config.path);
+  return std::make_unique<motoflex_es::NloptOptimizer>(bounds, options);
+}
+
+}  // namespace motoflex

@@ -1,0 +1,92 @@
+#include "motoflex/fit/fitness.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace motoflex {
+
+FitnessFunction::FitnessFunction(std::shared_ptr<const RobotModel> model,
+                                 std::vector<FitCase> cases, FitnessOptions options)
+    : model_(std::move(model)), cases_(std::move(cases)), options_(std::move(options)) {
+  const std::size_t n = model_->actuators.size();
+  weights_ = options_.joint_weights.empty() ? std::vector<double>(n, 1.0) : options_.joint_weights;
+  if (weights_.size() != n) throw std::invalid_argument("joint weights: one per actuated joint");
+  if (!(options_.m >= 0.0)) throw std::invalid_argument("fitness exponent m must be >= 0");
+  for (const auto& c : cases_) {
+    if (c.commands.joints() != n || c.measured_rad.size() != c.commands.frames() * n) {
+      throw std::invalid_argument("case " + c.name + ": measured angles do not match the model");
+    }
+    std::size_t first = 0;
+    while (first < c.commands.frames() &&
+           c.commands.time_s(first) - c.commands.start_s() < options_.settle_s - 1e-12) {
+      ++first;
+    }
+    if (first >= c.commands.frames()) {
+      throw std::invalid_argument("case " + c.name + ": settle_s covers the whole log");
+    }
+    first_scored_frame_.push_back(first);
+  }
+}
+
+FitnessBreakdown FitnessFunction::evaluate(const ParameterSet& parameters, double stop_threshold,
+                                           std::vector<RolloutResult>* rollouts) const {
+  FitnessBreakdown out;
+  const std::size_t n = model_->actuators.size();
+  double finished_fitness = 0.0;  // Σ of the cases already completed
+  for (std::size_t c = 0; c < cases_.size(); ++c) {
+    const FitCase& fit_case = cases_[c];
+    ParameterSet set = parameters;
+    for (const auto& [index, value] : fit_case.parameter_overrides) set.set(index, value);
+    const std::size_t first = first_scored_frame_[c];
+    const double t_max = static_cast<double>(fit_case.commands.frames() - first);
+    const double t_max_power = std::pow(t_max, options_.m);
+    CaseScore score;
+    score.frames_requested = fit_case.commands.frames() - first;
+    bool stopped = false;
+    // Accumulates the error frame by frame; asks the rollout to stop once the lower bound of
+    // the final fitness reaches the threshold.
+    const FrameObserver observer = [&](const RolloutResult& result, std::size_t frame) {
+      if (frame < first) return true;
+      const double* sim = &result.measured_rad[frame * n];
+      const double* real = &fit_case.measured_rad[frame * n];
+      for (std::size_t j = 0; j < n; ++j) {
+        const double e = real[j] - sim[j];
+        score.squared_error_rad2 += weights_[j] * e * e;
+      }
+      ++score.frames;
+      if (std::isfinite(stop_threshold) &&
+          finished_fitness + score.squared_error_rad2 / t_max_power >= stop_threshold) {
+        stopped = true;
+        return false;
+      }
+      return true;
+    };
+    RolloutResult result = run_rollout(*model_, set, fit_case.commands, fit_case.options, observer);
+    score.end = result.end;
+    score.end_detail = result.end_detail;
+    if (stopped) {
+      score.fitness = score.squared_error_rad2 / t_max_power;
+      out.fitness = finished_fitness + score.fitness;
+      out.stopped_early = true;
+      out.cases.push_back(std::move(score));
+      if (rollouts != nullptr) rollouts->push_back(std::move(result));
+      return out;
+    }
+    if (result.end == RolloutEnd::kModelError || result.end == RolloutEnd::kDiverged ||
+        score.frames == 0) {
+      // Failure is a score: the worst one.
+      score.fitness = std::numeric_limits<double>::infinity();
+    } else {
+      score.fitness =
+          score.squared_error_rad2 / std::pow(static_cast<double>(score.frames), options_.m);
+    }
+    finished_fitness += score.fitness;
+    out.cases.push_back(std::move(score));
+    if (rollouts != nullptr) rollouts->push_back(std::move(result));
+  }
+  out.fitness = finished_fitness;
+  return out;
+}
+
+}  // namespace motoflex
