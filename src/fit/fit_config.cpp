@@ -254,7 +254,8 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
   config.free = read_free(root.at("free"), base);
 
   if (const auto fitness = root.find("fitness")) {
-    fitness->require_keys_within({"m", "settle_s", "weights"});
+    fitness->require_keys_within({"m", "settle_s", "weights", "early_termination"});
+    config.early_termination = fitness->get_bool("early_termination", true);
     config.fitness.m = fitness->get_double("m", config.fitness.m);
     if (!(config.fitness.m >= 0.0)) fitness->at("m").fail("must be >= 0");
     config.fitness.settle_s = fitness->get_double("settle_s", 0.0);

@@ -1,4 +1,5 @@
 #include <atomic>
+#include <limits>
 #include <stdexcept>
 
 #include "motoflex/core/error.hpp"
@@ -52,8 +53,9 @@ void FitProblem::evaluate_batch(const std::vector<std::vector<double>>& xs,
                                 const motoflex_es::EvaluationContext& context) {
   ensure_ode_ready();  // this may be a worker thread of the evaluator
   for (std::size_t k = 0; k < xs.size(); ++k) {
-    const FitnessBreakdown result =
-        config_.train->evaluate(config_.space->apply(xs[k]), context.stop_threshold);
+    const double threshold = config_.early_termination ? context.stop_threshold
+                                                       : std::numeric_limits<double>::infinity();
+    const FitnessBreakdown result = config_.train->evaluate(config_.space->apply(xs[k]), threshold);
     fitness[k] = result.fitness;
     std::uint64_t simulated = 0, requested = 0;
     for (const auto& c : result.cases) simulated += c.frames;

@@ -240,7 +240,9 @@ int run_fit(const FitConfig& config, bool resume, motoflex_es::Evaluator* evalua
     if (summary.reason == motoflex_es::RunStopReason::kStrategy) {
       stop_reason = std::string("strategy: ") + motoflex_es::to_string(strategy->stop_reason());
     }
-    if (g_stop_signal == 0) {
+    // Only a strategy that stopped by itself is finished; a budget stop can be resumed with a
+    // larger budget.
+    if (g_stop_signal == 0 && summary.reason == motoflex_es::RunStopReason::kStrategy) {
       state.main_done = true;
       motoflex_es::Checkpoint checkpoint;
       checkpoint.config_hash = config.hash;

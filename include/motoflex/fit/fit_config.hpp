@@ -64,7 +64,7 @@ struct FitOverrides {
 //     joint.*.friction_nm: {lower: 0.01, upper: 3, log: true}        # one tied value
 //     gear.*.backlash_rad: {lower: 1e-7, upper: 1e-2, each: true}    # one value per match
 //   fixed: {motor.stiffness: 0.7}      # values on top of the robot defaults
-//   fitness: {m: 2, settle_s: 0.0, weights: {LKneePitch: 2.0}}
+//   fitness: {m: 2, settle_s: 0.0, weights: {LKneePitch: 2.0}, early_termination: true}
 //   strategy: {kind: mu_plus_lambda, mu: 10, lambda: 40, kappa: 3}
 //   budget: {generations: 30, evaluations: 2000, seconds: 600}
 //   threads: 2
@@ -84,6 +84,9 @@ struct FitConfig {
   int threads = 1;
   std::uint64_t seed = 1;
   std::string out_dir;
+  // Stop rollouts that cannot beat the selection threshold (fitness: {early_termination: ..}).
+  // Selection is identical either way, so it is not part of the identity.
+  bool early_termination = true;
 
   // Loaded from the files above.
   std::shared_ptr<const Scenario> scenario;

@@ -1,0 +1,92 @@
+#pragma once
+
+// Synthetic fit problems for tests: "measured" logs of the pendulum bench from a known truth,
+// and fit configs over them.
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "motoflex/io/joint_log.hpp"
+#include "motoflex/io/rollout_log.hpp"
+#include "motoflex/io/scenario.hpp"
+
+namespace motoflex::testing {
+
+inline const std::string kPendulumScenario =
+    std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/servo_pendulum_replay.yaml";
+
+// The truth the synthetic logs are recorded with.
+inline std::map<std::string, double> pendulum_truth() {
+  return {{"bench.Kt_nm_per_a", 0.35},
+          {"bench.R_ohm", 2.6},
+          {"joint.pendulum.friction_nm", 0.08},
+          {"joint.pendulum.viscous_nm_s_per_rad", 0.02},
+          {"bench.armature_kg_m2", 0.003}};
+}
+
+// Records `name`.csv into `folder` from the truth (plus `extra` parameters such as sensor noise).
+inline void record_pendulum_log(const std::filesystem::path& folder, const std::string& name,
+                                const std::map<std::string, double>& extra = {},
+                                std::uint64_t seed = 1) {
+  Scenario scenario = load_scenario(kPendulumScenario);
+  for (const auto& [key, value] : pendulum_truth()) scenario.parameters.set(key, value);
+  for (const auto& [key, value] : extra) scenario.parameters.set(key, value);
+  scenario.rollout.seed = seed;
+  const RolloutResult result =
+      run_rollout(*scenario.model, scenario.parameters, scenario.commands, scenario.rollout);
+  JointLogMeta meta;
+  meta.robot = scenario.model->name;
+  meta.rate_hz = scenario.log_rate_hz;
+  meta.motion = scenario.motion_description;
+  meta.origin = "test truth";
+  meta.parameters = scenario.log_parameters;
+  std::filesystem::create_directories(folder);
+  write_joint_log((folder / (name + ".csv")).string(), joint_log_from_rollout(result, meta));
+}
+
+// A fit config over the logs of `data`, written to `folder`/fit.yaml.
+inline std::string write_pendulum_fit(const std::filesystem::path& folder,
+                                      const std::filesystem::path& data,
+                                      const std::string& strategy, const std::string& budget,
+                                      const std::string& extra = "") {
+  const std::string path = (folder / "fit.yaml").string();
+  std::ofstream(path) << "name: pendulum\n"
+                      << "scenario: " << kPendulumScenario << "\n"
+                      << "data: " << data.string() << "\n"
+                      << "free:\n"
+                      << "  bench.Kt_nm_per_a: {lower: 0.1, upper: 3.0, log: true}\n"
+                      << "  joint.pendulum.friction_nm: {lower: 0.001, upper: 0.5, log: true}\n"
+                      << "  joint.pendulum.viscous_nm_s_per_rad: {lower: 0.001, upper: 1.0, log: "
+                         "true}\n"
+                      << "  bench.armature_kg_m2: {lower: 0.0001, upper: 0.05, log: true}\n"
+                      << "strategy: " << strategy << "\n"
+                      << "budget: " << budget << "\n"
+                      << "seed: 7\n"
+                      << extra;
+  return path;
+}
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// generations.csv without its last (seconds) column.
+inline std::string generations_without_seconds(const std::filesystem::path& run_dir) {
+  std::ifstream in(run_dir / "generations.csv");
+  std::string line, out;
+  while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
+  return out;
+}
+
+// best.json without its provenance date.
+inline std::string best_without_date(const std::filesystem::path& run_dir) {
+  std::string text = read_text(run_dir / "best.json");
+  const auto at = text.find("\"date\"");
+  if (at != std::string::npos) text.erase(at, text.find('\n', at) - at);
+  return text;
+}
+
+}  // namespace motoflex::testing
