@@ -11,10 +11,13 @@
 namespace motoflex {
 namespace {
 
-// Shortest text that parses back to exactly `value` (std::to_chars guarantees the round trip).
-void append_number(std::string& out, double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+// Shortest text that parses back to exactly `value` (std::to_chars guarantees the round trip),
+// or `digits` significant digits when digits > 0.
+void append_number(std::string& out, double value, int digits = 0) {
+  char buffer[40];
+  const auto result = digits > 0 ? std::to_chars(buffer, buffer + sizeof(buffer), value,
+                                                 std::chars_format::general, digits)
+                                 : std::to_chars(buffer, buffer + sizeof(buffer), value);
   out.append(buffer, result.ptr);
 }
 
@@ -92,7 +95,7 @@ void check_log(const std::string& csv_path, const JointLog& log) {
   }
 }
 
-std::string format_csv(const JointLog& log) {
+std::string format_csv(const JointLog& log, int digits) {
   const std::size_t joints = log.joints();
   std::string out;
   out.reserve(32 + log.frames() * (1 + 2 * joints + 2) * 24);
@@ -109,20 +112,20 @@ std::string format_csv(const JointLog& log) {
     for (std::size_t joint = 0; joint < joints; ++joint) {
       if (log.has_commanded()) {
         out += ',';
-        append_number(out, log.commanded(frame, joint));
+        append_number(out, log.commanded(frame, joint), digits);
       }
       if (log.has_measured()) {
         out += ',';
-        append_number(out, log.measured(frame, joint));
+        append_number(out, log.measured(frame, joint), digits);
       }
     }
     if (!log.imu_roll_rad.empty()) {
       out += ',';
-      append_number(out, log.imu_roll_rad[frame]);
+      append_number(out, log.imu_roll_rad[frame], digits);
     }
     if (!log.imu_pitch_rad.empty()) {
       out += ',';
-      append_number(out, log.imu_pitch_rad[frame]);
+      append_number(out, log.imu_pitch_rad[frame], digits);
     }
     out += '\n';
   }
@@ -154,9 +157,9 @@ std::string format_sidecar(const JointLogMeta& meta) {
 
 }  // namespace
 
-void write_joint_log(const std::string& csv_path, const JointLog& log) {
+void write_joint_log(const std::string& csv_path, const JointLog& log, int significant_digits) {
   check_log(csv_path, log);
-  const std::string csv = format_csv(log);
+  const std::string csv = format_csv(log, significant_digits);
   const std::string sidecar = format_sidecar(log.meta);
   write_file_atomically(csv_path, csv);
   // Last, so a sidecar on disk means its CSV is complete.

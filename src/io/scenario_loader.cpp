@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "excitation_scenario_motion.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/io/scenario.hpp"
@@ -107,6 +108,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   if (overrides.flex_sub_bodies) structure.flex_sub_bodies = *overrides.flex_sub_bodies;
   if (overrides.gear_substeps) rollout.gear_substeps = *overrides.gear_substeps;
   if (overrides.universal_joints) structure.universal_joints = *overrides.universal_joints;
+  if (overrides.settle_s) rollout.settle_s = *overrides.settle_s;
   const int seed = root.get_int("seed", 1);
   if (seed < 0) root.at("seed").fail("must be >= 0");
   rollout.seed = static_cast<std::uint64_t>(seed);
@@ -154,18 +156,17 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
     scenario.motion_description = "none";
   } else {
     const YamlValue motion = root.at("motion");
-    motion.require_keys_within(
-        {"log", "keyframes", "stand", "walk", "kick", "titan_crawl", "titan_updown",
-         "titan_stand"});
+    motion.require_keys_within({"log", "keyframes", "stand", "walk", "kick", "titan_crawl",
+                                "titan_updown", "titan_stand", "excitation"});
     if (motion.entries().size() != 1) {
       motion.fail(
           "give exactly one of log, keyframes, stand, walk, kick, titan_crawl, titan_updown, "
-          "titan_stand");
+          "titan_stand, excitation");
     }
     if (const auto log = motion.find("log")) {
-      scenario.commands = trajectory_from_log(*model, log->resolve_path(log->as_string()),
-                                              scenario.parameters, scenario.motion_description,
-                            scenario.log_parameters);
+      scenario.commands =
+          trajectory_from_log(*model, log->resolve_path(log->as_string()), scenario.parameters,
+                              scenario.motion_description, scenario.log_parameters);
     } else if (const auto keyframes = motion.find("keyframes")) {
       keyframes->require_keys_within({"rate_hz", "frames"});
       const double rate_hz = keyframes->get_double("rate_hz", 100.0);
@@ -189,6 +190,9 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
       scenario.commands = std::move(nao->commands);
       scenario.log_rate_hz = nao->rate_hz;
       scenario.motion_description = nao->description;
+    } else if (auto excitation = detail::excitation_motion_from_yaml(motion, *model)) {
+      scenario.commands = std::move(*excitation);
+      scenario.motion_description = "excitation";
     } else if (auto titan = detail::titan_motion_from_yaml(motion, *model, scenario.parameters,
                                                            scenario.rollout.servo)) {
       scenario.commands = std::move(titan->commands);

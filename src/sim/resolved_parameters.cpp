@@ -104,7 +104,7 @@ ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSe
     a.encoder_offset_rad = get(joint + "encoder_offset_rad");
   }
   if (servo == ServoKind::kIdeal) out.ideal.torque_max_nm = get("ideal.torque_max_nm");
-  if (servo == ServoKind::kMotoflex) {
+  if (servo == ServoKind::kMotoflex || servo == ServoKind::kBench) {
     out.motor_resistance_drift_per_s = get("motor.R_drift_per_s");
     out.supply_sag_ohm = get("motor.supply_sag_ohm");
     if (out.supply_sag_ohm < 0.0) throw ModelError("motor.supply_sag_ohm must not be negative");

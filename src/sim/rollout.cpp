@@ -385,7 +385,9 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
       }
       case ServoKind::kBench: {
         const auto& p = params.actuators[i];
-        torque = bench_servo_torque_nm(p.bench, now_rad[i], q, w, true);
+        BenchServoParams bench = p.bench;
+        bench.resistance_ohm *= 1.0 + params.motor_resistance_drift_per_s * elapsed_s;
+        torque = bench_servo_torque_nm(bench, now_rad[i], q, w, true);
         const MotorCommand friction = joint_friction(p.friction, w, torque);
         axis.set_motor(friction.velocity_rad_s, friction.fmax_nm);
         break;

@@ -93,6 +93,9 @@ JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements&
 // (inconsistent sizes, non-finite values, time not strictly increasing, fewer than 2 frames,
 // bad joint names, no robot or rate_hz, units other than "rad"), and InputError if a file
 // cannot be written.
-void write_joint_log(const std::string& csv_path, const JointLog& log);
+// significant_digits > 0 rounds the angle columns to that many significant digits (reference
+// data: 9 digits keep 1e-9 relative, far below any encoder's resolution, at half the size);
+// 0 writes every number so that it reads back bit-identically.
+void write_joint_log(const std::string& csv_path, const JointLog& log, int significant_digits = 0);
 
 }  // namespace motoflex

@@ -55,6 +55,7 @@ struct ScenarioOverrides {
   std::optional<int> flex_sub_bodies;
   std::optional<int> gear_substeps;
   std::optional<bool> universal_joints;
+  std::optional<double> settle_s;
   std::optional<double> duration_s;            // truncate the motion
   bool motion_optional = false;  // a scenario without `motion` is accepted (fits bring logs)
 };
