@@ -1,0 +1,59 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "motoflex_es/problem.hpp"
+
+namespace motoflex_es {
+
+// Evaluates a batch of points through a Problem; the seam between a strategy and where the
+// work runs (this process serially, OpenMP threads, later MPI ranks). Every evaluator stores
+// fitness[k] for xs[k] by index, never in completion order, and hands the problem the
+// individual's index in the context, so a deterministic problem gives bit-identical results
+// under every evaluator and any number of workers.
+class Evaluator {
+ public:
+  virtual ~Evaluator() = default;
+
+  // Resizes `fitness` to xs.size() and fills it. Exceptions from the problem propagate (when
+  // several individuals throw, the one with the lowest index wins).
+  virtual void evaluate(Problem& problem, const std::vector<std::vector<double>>& xs,
+                        std::vector<double>& fitness, const EvaluationContext& context) = 0;
+  // For summaries and logs, e.g. "serial" or "openmp(4 threads)".
+  virtual std::string name() const = 0;
+  // How many individuals can be evaluated at once.
+  virtual int workers() const = 0;
+};
+
+// The whole batch in one Problem::evaluate_batch call in the calling thread.
+class SerialEvaluator final : public Evaluator {
+ public:
+  void evaluate(Problem& problem, const std::vector<std::vector<double>>& xs,
+                std::vector<double>& fitness, const EvaluationContext& context) override;
+  std::string name() const override { return "serial"; }
+  int workers() const override { return 1; }
+};
+
+// One individual per Problem::evaluate_batch call, spread over `threads` OpenMP threads with
+// dynamic scheduling (rollouts that stop early free their thread at once). The problem must
+// allow concurrent calls (see Problem::evaluate_batch). threads <= 0 means OpenMP's default
+// (omp_get_max_threads()).
+class OpenMpEvaluator final : public Evaluator {
+ public:
+  explicit OpenMpEvaluator(int threads);
+
+  void evaluate(Problem& problem, const std::vector<std::vector<double>>& xs,
+                std::vector<double>& fitness, const EvaluationContext& context) override;
+  std::string name() const override;
+  int workers() const override { return threads_; }
+
+ private:
+  int threads_;
+};
+
+// An MPI evaluator would implement Evaluator the same way: rank 0 scatters (index, x) pairs to
+// workers that each own a replica of the Problem and evaluate one-individual batches with
+// first_individual = index, and gathers (index, fitness) back into fitness[index].
+
+}  // namespace motoflex_es

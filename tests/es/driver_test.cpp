@@ -1,0 +1,118 @@
+#include "motoflex_es/driver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "motoflex_es/mu_plus_lambda.hpp"
+#include "test_problems.hpp"
+
+namespace motoflex_es {
+namespace {
+
+using testing::BenchmarkProblem;
+using testing::Function;
+
+MuPlusLambdaOptions small() {
+  MuPlusLambdaOptions options;
+  options.mu = 3;
+  options.lambda = 7;
+  return options;
+}
+
+TEST(EsDriverTest, EvaluationBudgetIsNeverExceeded) {
+  BenchmarkProblem problem(Function::kSphere, 2);
+  MuPlusLambda es(problem.bounds(), small());
+  SerialEvaluator evaluator;
+  Budget budget;
+  budget.max_evaluations = 50;
+  const RunSummary summary = run_optimisation(es, problem, evaluator, budget);
+  // 3 initial + 6 × 7 = 45; another batch would make 52.
+  EXPECT_EQ(summary.reason, RunStopReason::kMaxEvaluations);
+  EXPECT_EQ(summary.evaluations, 45u);
+  EXPECT_EQ(problem.calls(), 45u);
+  EXPECT_EQ(summary.generations, 7u);
+}
+
+TEST(EsDriverTest, GenerationBudgetCountsTheWholeRunAcrossResumes) {
+  BenchmarkProblem problem(Function::kSphere, 2);
+  MuPlusLambda es(problem.bounds(), small());
+  SerialEvaluator evaluator;
+  Budget budget;
+  budget.max_generations = 4;
+  RunSummary summary = run_optimisation(es, problem, evaluator, budget);
+  EXPECT_EQ(summary.reason, RunStopReason::kMaxGenerations);
+  EXPECT_EQ(es.generation(), 4u);
+  budget.max_generations = 10;
+  summary = run_optimisation(es, problem, evaluator, budget);
+  EXPECT_EQ(es.generation(), 10u);
+  EXPECT_EQ(summary.generations_this_call, 6u);
+  EXPECT_EQ(summary.evaluations_this_call, 6u * 7u);
+}
+
+TEST(EsDriverTest, CallbackSeesEveryGenerationAndCanStopTheRun) {
+  BenchmarkProblem problem(Function::kSphere, 2);
+  MuPlusLambda es(problem.bounds(), small());
+  SerialEvaluator evaluator;
+  std::vector<GenerationReport> reports;
+  RunCallbacks callbacks;
+  callbacks.on_generation = [&reports](const Strategy& strategy, const GenerationReport& report) {
+    EXPECT_EQ(report.generation, strategy.generation());
+    EXPECT_EQ(report.best_fitness, strategy.best_fitness());
+    reports.push_back(report);
+    return reports.size() < 5;
+  };
+  const RunSummary summary = run_optimisation(es, problem, evaluator, Budget{}, callbacks);
+  EXPECT_EQ(summary.reason, RunStopReason::kCallback);
+  ASSERT_EQ(reports.size(), 5u);
+  EXPECT_EQ(reports[0].batch_size, 3u);
+  EXPECT_EQ(reports[1].batch_size, 7u);
+  EXPECT_EQ(reports[0].stop_threshold, std::numeric_limits<double>::infinity());
+  EXPECT_LT(reports[1].stop_threshold, std::numeric_limits<double>::infinity());
+  for (const auto& report : reports) EXPECT_LE(report.best_fitness, report.batch_best);
+  EXPECT_NE(summary.full_report().find("mu_plus_lambda"), std::string::npos);
+  EXPECT_NE(summary.brief_report().find("callback"), std::string::npos);
+}
+
+TEST(EsDriverTest, ContextCarriesGenerationAndThreshold) {
+  class Recording : public BenchmarkProblem {
+   public:
+    Recording() : BenchmarkProblem(Function::kSphere, 2) {}
+    void evaluate_batch(const std::vector<std::vector<double>>& xs, std::vector<double>& fitness,
+                        const EvaluationContext& context) override {
+      contexts.push_back(context);
+      BenchmarkProblem::evaluate_batch(xs, fitness, context);
+    }
+    std::vector<EvaluationContext> contexts;
+  } problem;
+  MuPlusLambda es(problem.bounds(), small());
+  std::vector<double> thresholds;
+  RunCallbacks callbacks;
+  callbacks.on_generation = [&thresholds](const Strategy& strategy, const GenerationReport&) {
+    thresholds.push_back(strategy.selection_threshold());
+    return true;
+  };
+  SerialEvaluator evaluator;
+  Budget budget;
+  budget.max_generations = 6;
+  run_optimisation(es, problem, evaluator, budget, callbacks);
+  ASSERT_EQ(problem.contexts.size(), 6u);
+  for (std::size_t g = 0; g < 6; ++g) {
+    EXPECT_EQ(problem.contexts[g].generation, g);
+    EXPECT_EQ(problem.contexts[g].first_individual, 0u);
+    if (g > 0) {
+      EXPECT_EQ(problem.contexts[g].stop_threshold, thresholds[g - 1]);
+    }
+  }
+}
+
+TEST(EsDriverTest, DimensionMismatchIsAnError) {
+  BenchmarkProblem problem(Function::kSphere, 3);
+  MuPlusLambda es(Bounds{{0.0, 0.0}, {1.0, 1.0}}, small());
+  SerialEvaluator evaluator;
+  EXPECT_THROW(run_optimisation(es, problem, evaluator, Budget{}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace motoflex_es
