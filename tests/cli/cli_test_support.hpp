@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace motoflex::testing {
 
@@ -18,9 +19,12 @@ struct CommandResult {
 };
 
 inline CommandResult run_motoflex(const std::string& arguments) {
+  // ctest runs tests in parallel processes: one stderr file per process and call.
+  static int calls = 0;
   const auto dir = std::filesystem::temp_directory_path() / "motoflex_cli_test";
   std::filesystem::create_directories(dir);
-  const auto err = dir / "stderr.txt";
+  const auto err =
+      dir / ("stderr_" + std::to_string(getpid()) + "_" + std::to_string(++calls) + ".txt");
   const std::string command =
       std::string(MOTOFLEX_TEST_BINARY) + " " + arguments + " 2> " + err.string();
   CommandResult result;
@@ -33,8 +37,12 @@ inline CommandResult run_motoflex(const std::string& arguments) {
   }
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err);
-  result.stderr_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  {
+    std::ifstream in(err);
+    result.stderr_text.assign(std::istreambuf_iterator<char>(in),
+                              std::istreambuf_iterator<char>());
+  }
+  std::filesystem::remove(err);
   return result;
 }
 
