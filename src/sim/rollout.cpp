@@ -84,6 +84,10 @@ struct Rollout::Impl {
     std::size_t body_index;
   };
   std::vector<GeomRef> foot_geoms;
+  std::vector<dJointFeedback> contact_feedback;  // kMaxContactsPerFoot per foot box
+  std::vector<std::size_t> contact_owner;        // foot box of each used feedback slot
+  std::size_t contacts_used = 0;
+  std::vector<Eigen::Vector3d> foot_force_n;  // ground force on each foot box (world frame)
   std::vector<GeomRef> other_geoms;
 
   std::vector<detail::OdeAxis> axes;                 // per actuator
@@ -122,6 +126,7 @@ struct Rollout::Impl {
   void apply_servos(const double* now_rad, const double* next_rad);
   void apply_flex_springs();
   void collide_feet();
+  void read_foot_forces();
   std::optional<std::string> fall_reason(const Rollout& self) const;
   bool diverged(std::string& detail) const;
   double encoder_input(std::size_t actuator) const;  // what the encoder senses now
@@ -421,14 +426,30 @@ void Rollout::Impl::apply_flex_springs() {
 
 void Rollout::Impl::collide_feet() {
   dContactGeom contacts[kMaxContactsPerFoot];
-  for (const GeomRef& foot : foot_geoms) {
+  std::size_t used = 0;
+  for (std::size_t f = 0; f < foot_geoms.size(); ++f) {
+    const GeomRef& foot = foot_geoms[f];
     const int n = dCollide(foot.geom, ground, kMaxContactsPerFoot, contacts, sizeof(dContactGeom));
     for (int k = 0; k < n; ++k) {
       dContact contact = contact_template;
       contact.geom = contacts[k];
       dJointID joint = dJointCreateContact(world, contact_group, &contact);
       dJointAttach(joint, foot.body, nullptr);
+      // The contact force is read back after the step (foot force sensor); the feedback
+      // buffers are preallocated, one per possible contact.
+      dJointSetFeedback(joint, &contact_feedback[used]);
+      contact_owner[used] = f;
+      ++used;
     }
+  }
+  contacts_used = used;
+}
+
+void Rollout::Impl::read_foot_forces() {
+  for (auto& force : foot_force_n) force.setZero();
+  for (std::size_t c = 0; c < contacts_used; ++c) {
+    const dJointFeedback& fb = contact_feedback[c];
+    foot_force_n[contact_owner[c]] += Eigen::Vector3d(fb.f1[0], fb.f1[1], fb.f1[2]);
   }
 }
 
@@ -478,6 +499,9 @@ Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
   impl_->build_bodies();
   impl_->build_joints();
   impl_->build_actuators();
+  impl_->contact_feedback.resize(impl_->foot_geoms.size() * kMaxContactsPerFoot);
+  impl_->contact_owner.resize(impl_->contact_feedback.size());
+  impl_->foot_force_n.assign(impl_->foot_geoms.size(), Eigen::Vector3d::Zero());
   impl_->place(initial_pose_rad);
 }
 
@@ -496,6 +520,7 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
     s.collide_feet();
     const int ok = s.options.solver == StepSolver::kStep ? dWorldStep(s.world, s.options.dt_s)
                                                          : dWorldQuickStep(s.world, s.options.dt_s);
+    s.read_foot_forces();
     dJointGroupEmpty(s.contact_group);
     if (!ok) throw ModelError("ODE ran out of memory in the step");
   } catch (const ModelError& error) {
@@ -557,6 +582,18 @@ double Rollout::torso_tilt_rad() const {
   const Eigen::Matrix3d R =
       from_ode_rotation(dBodyGetRotation(torso)) * impl_->model.R_torsoBody_torsoLink;
   return std::acos(std::clamp(R(2, 2), -1.0, 1.0));
+}
+
+std::size_t Rollout::foot_count() const {
+  return impl_->foot_geoms.size();
+}
+
+Eigen::Vector3d Rollout::foot_force_n(std::size_t foot) const {
+  return impl_->foot_force_n.at(foot);
+}
+
+std::string Rollout::foot_name(std::size_t foot) const {
+  return impl_->model.bodies[impl_->foot_geoms.at(foot).body_index].name;
 }
 
 dWorldID Rollout::world() const {

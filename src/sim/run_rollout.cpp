@@ -21,6 +21,9 @@ void record_frame(Rollout& rollout, RolloutResult& result, std::size_t frame,
   result.imu_pitch_rad.push_back(pitch);
   const Eigen::Vector3d p = rollout.torso_position_m();
   result.torso_position_m.insert(result.torso_position_m.end(), {p.x(), p.y(), p.z()});
+  for (std::size_t f = 0; f < rollout.foot_count(); ++f) {
+    result.foot_force_z_n.push_back(rollout.foot_force_n(f).z());
+  }
   result.frames_completed = frame + 1;
 }
 

@@ -55,6 +55,7 @@ struct RolloutResult {
   std::vector<double> imu_roll_rad;
   std::vector<double> imu_pitch_rad;
   std::vector<double> torso_position_m;  // x, y, z of the torso CoM per frame
+  std::vector<double> foot_force_z_n;    // per frame, the vertical ground force on each foot
   std::size_t frames_requested = 0;
   std::size_t frames_completed = 0;  // T of the fitness: frames before the end or a fall
   RolloutEnd end = RolloutEnd::kCompleted;
@@ -92,6 +93,11 @@ class Rollout {
   void imu_roll_pitch(double& roll_rad, double& pitch_rad) const;
   Eigen::Vector3d torso_position_m() const;
   double torso_tilt_rad() const;
+  // Foot force sensors: the ground's force on each foot box during the last step (world
+  // frame, N; z is the load it carries), from the contact joints' feedback.
+  std::size_t foot_count() const;
+  Eigen::Vector3d foot_force_n(std::size_t foot) const;
+  std::string foot_name(std::size_t foot) const;
 
   // Raw handles for studies that need ODE directly (joint feedback, contact forces).
   dWorldID world() const;
