@@ -1,0 +1,106 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "motoflex/model/robot_model.hpp"
+#include "motoflex/motion/command_trajectory.hpp"
+#include "motoflex/motion/nao_leg_kinematics.hpp"
+
+namespace motoflex {
+
+// Straight walking of a Nao-class robot, generated open loop like the Czarnetzki et al. walk
+// the MoToFlex paper used: footsteps → reference ZMP → CoM by ZMP preview control on the
+// cart-table model → leg inverse kinematics. Timing convention of that walk (Nao Devils):
+// `step_duration_s` is one gait cycle (a left and a right step); each step takes half of it and
+// moves the swing foot `step_length = speed · step_duration_s / 2` ahead of the support foot,
+// so each foot advances speed · step_duration_s per cycle.
+//
+// Reach (nao_max_walk_speed_mm_s, defaults, rigid Nao): up to 274 mm/s at step_duration_s 1 but
+// only 110 mm/s at 2. In a long single support the LIPM's CoM hovers over the support foot, so
+// the other foot lifts off almost a whole step length behind the hip and lands almost one ahead;
+// the rear leg's hip extension (HipPitch <= 0.484 rad) and ankle dorsiflexion (AnklePitch >=
+// -1.186 rad) cannot follow 0.15 m steps with flat feet and an upright torso.
+struct NaoWalkParams {
+  double speed_mm_s = 100.0;          // forward speed while walking
+  double step_duration_s = 1.0;       // one gait cycle (two steps)
+  double step_height_m = 0.02;        // swing-foot lift
+  double double_support_ratio = 0.2;  // share of each step with both feet down
+  // Whole-body CoM above the ground (constant). Standing straight the Nao's CoM is 0.271 m up;
+  // 0.24 bends the knees enough for 0.1 m steps (speed · step_duration_s / 2) at 1 s per step.
+  double com_height_m = 0.24;
+  double foot_spacing_m = 0.10;  // lateral distance between the two ankles
+  double start_s = 1.0;          // standing before the first step; the weight shift ends it
+  double stop_s = 1.0;           // after the closing step: weight back to the middle, rest
+  double duration_s = 10.0;      // whole motion; the steps fill duration − start − stop
+  double rate_hz = 100.0;        // command (log) rate; also the preview control period
+  // Reference ZMP inside the support foot, relative to the ankle: x forward, y toward the
+  // other foot (inward). The sole spans x ∈ [−0.05, 0.10] m around the ankle.
+  double zmp_offset_x_m = 0.015;
+  double zmp_offset_y_m = 0.02;  // less sideways sway: the hip and ankle rolls stay in range
+  // During single support the reference ZMP rolls forward by this much (centred on the offset
+  // above; capped at the step length; not in the first and the closing step).
+  double zmp_travel_x_m = 0.04;
+  // Torso shifted forward of the CoM the mass model asks for (compensates what the cart-table
+  // model leaves out).
+  double torso_offset_x_m = 0.0;
+  double preview_s = 1.6;  // look-ahead of the ZMP preview controller (weights: nao_walk.cpp)
+  bool first_swing_left = false;  // the right foot steps first
+
+  // Empty when the numbers are usable on their own (signs, ranges, time budget); otherwise one
+  // line naming the parameter, its value and the limit. Reachability is checked by the planner.
+  std::string validate() const;
+};
+
+enum class NaoSupport { kDouble, kLeft, kRight };
+
+// One command frame of the plan. World frame: x forward, y left, z up; origin on the ground
+// midway between the ankles at the start.
+struct NaoWalkSample {
+  double time_s = 0.0;
+  NaoSupport support = NaoSupport::kDouble;
+  Eigen::Vector2d zmp_ref_m = Eigen::Vector2d::Zero();  // reference ZMP
+  Eigen::Vector2d zmp_m = Eigen::Vector2d::Zero();      // cart-table ZMP of the planned CoM
+  Eigen::Vector2d com_m = Eigen::Vector2d::Zero();      // planned CoM (height com_height_m)
+  Eigen::Vector2d com_accel_m_s2 = Eigen::Vector2d::Zero();
+  Eigen::Vector3d left_sole_m = Eigen::Vector3d::Zero();  // sole points (feet flat)
+  Eigen::Vector3d right_sole_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torso_m = Eigen::Vector3d::Zero();  // torso frame origin
+};
+
+struct NaoWalkPlan {
+  NaoWalkParams params;
+  double step_length_m = 0.0;  // swing foot lands this far ahead of the support foot
+  int steps = 0;               // including the first (half) and the closing step
+  double walk_start_s = 0.0;   // the first step begins (= start_s)
+  double walk_end_s = 0.0;     // closing step done
+  // Between the end of the first (half) step and the start of the closing step the CoM moves at
+  // the commanded speed on average.
+  double steady_start_s = 0.0;
+  double steady_end_s = 0.0;
+  double mass_kg = 0.0;
+  std::vector<NaoWalkSample> samples;  // one per command frame
+  CommandTrajectory commands;          // model actuator order
+};
+
+// Plans the walk for `model` (a Nao: the ten leg actuators LHipRoll … RAnkleRoll; others are
+// held at the stand pose). Throws std::invalid_argument naming the parameter and the limit
+// when the parameters are invalid or not reachable. A walk the legs cannot follow is reported
+// against speed_mm_s with the fastest speed that can be planned (bisection, 1 mm/s) and where
+// the first leg failed, e.g.
+//   "speed_mm_s = 400: step length 0.200 m (speed * step_duration_s / 2) exceeds the reachable
+//    0.118 m (speed_mm_s <= 236) at com_height_m 0.24, step_duration_s 1; at t = 1.90 s: left
+//    leg: hip-to-ankle distance 0.2047 m exceeds the leg length 0.2029 m (thigh + tibia)"
+// and, when not even stepping in place works, against com_height_m.
+NaoWalkPlan plan_nao_walk(const RobotModel& model, const NaoWalkParams& params);
+
+// plan_nao_walk(...).commands.
+CommandTrajectory nao_walk_trajectory(const RobotModel& model, const NaoWalkParams& params);
+
+// The largest speed_mm_s (1 mm/s resolution, found by bisection on [0, 1000]) for which the walk
+// with the other parameters of `params` can be planned; 0 if not even stepping in place can.
+// Throws like plan_nao_walk for invalid parameters or an unreachable standing posture.
+double nao_max_walk_speed_mm_s(const RobotModel& model, const NaoWalkParams& params);
+
+}  // namespace motoflex

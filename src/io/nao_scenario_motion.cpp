@@ -1,0 +1,118 @@
+#include "nao_scenario_motion.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "motoflex/motion/nao_kick.hpp"
+#include "motoflex/motion/nao_walk.hpp"
+
+namespace motoflex::detail {
+namespace {
+
+using DoubleFields = std::vector<std::pair<const char*, double*>>;
+
+void read_doubles(const YamlValue& spec, const DoubleFields& fields) {
+  for (const auto& [key, target] : fields) *target = spec.get_double(key, *target);
+}
+
+// "left" / "right" → true for left.
+bool read_side(const YamlValue& spec, const char* key, bool default_left) {
+  const auto field = spec.find(key);
+  if (!field) return default_left;
+  const std::string side = field->as_string();
+  if (side != "left" && side != "right") field->fail("expected 'left' or 'right'");
+  return side == "left";
+}
+
+// Turns a planner error ("<parameter> = <value>: ...", or anything else) into an InputError at
+// the parameter's key when the file sets it, at the motion's mapping otherwise.
+[[noreturn]] void fail_at_parameter(const YamlValue& spec, const std::exception& error) {
+  const std::string message = error.what();
+  const std::size_t end = message.find(" = ");
+  if (end != std::string::npos && end < 40) {
+    if (const auto field = spec.find(message.substr(0, end))) field->fail(message);
+  }
+  spec.fail(message);
+}
+
+std::string format(const char* pattern, double a, double b) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof(buffer), pattern, a, b);
+  return buffer;
+}
+
+NaoScenarioMotion walk_from_yaml(const YamlValue& spec, const RobotModel& model) {
+  spec.require_keys_within({"speed_mm_s", "step_duration_s", "step_height_m",
+                            "double_support_ratio", "com_height_m", "foot_spacing_m", "start_s",
+                            "stop_s", "duration_s", "rate_hz", "zmp_offset_x_m", "zmp_offset_y_m",
+                            "zmp_travel_x_m", "torso_offset_x_m", "preview_s", "first_swing"});
+  NaoWalkParams p;
+  read_doubles(spec, {{"speed_mm_s", &p.speed_mm_s},
+                      {"step_duration_s", &p.step_duration_s},
+                      {"step_height_m", &p.step_height_m},
+                      {"double_support_ratio", &p.double_support_ratio},
+                      {"com_height_m", &p.com_height_m},
+                      {"foot_spacing_m", &p.foot_spacing_m},
+                      {"start_s", &p.start_s},
+                      {"stop_s", &p.stop_s},
+                      {"duration_s", &p.duration_s},
+                      {"rate_hz", &p.rate_hz},
+                      {"zmp_offset_x_m", &p.zmp_offset_x_m},
+                      {"zmp_offset_y_m", &p.zmp_offset_y_m},
+                      {"zmp_travel_x_m", &p.zmp_travel_x_m},
+                      {"torso_offset_x_m", &p.torso_offset_x_m},
+                      {"preview_s", &p.preview_s}});
+  p.first_swing_left = read_side(spec, "first_swing", p.first_swing_left);
+  try {
+    return {nao_walk_trajectory(model, p), p.rate_hz,
+            format("Nao walk %g mm/s, step duration %g s", p.speed_mm_s, p.step_duration_s)};
+  } catch (const std::invalid_argument& error) {
+    fail_at_parameter(spec, error);
+  }
+}
+
+NaoScenarioMotion kick_from_yaml(const YamlValue& spec, const RobotModel& model) {
+  spec.require_keys_within({"kick_leg", "com_height_m", "foot_spacing_m", "support_com_x_m",
+                            "support_com_y_m", "lift_height_m", "swing_inward_m", "backswing_m",
+                            "reach_m", "rest_s", "shift_s", "lift_s", "backswing_s", "kick_s",
+                            "return_s", "put_down_s", "shift_back_s", "rate_hz"});
+  NaoKickParams p;
+  read_doubles(spec, {{"com_height_m", &p.com_height_m},
+                      {"foot_spacing_m", &p.foot_spacing_m},
+                      {"support_com_x_m", &p.support_com_x_m},
+                      {"support_com_y_m", &p.support_com_y_m},
+                      {"lift_height_m", &p.lift_height_m},
+                      {"swing_inward_m", &p.swing_inward_m},
+                      {"backswing_m", &p.backswing_m},
+                      {"reach_m", &p.reach_m},
+                      {"rest_s", &p.rest_s},
+                      {"shift_s", &p.shift_s},
+                      {"lift_s", &p.lift_s},
+                      {"backswing_s", &p.backswing_s},
+                      {"kick_s", &p.kick_s},
+                      {"return_s", &p.return_s},
+                      {"put_down_s", &p.put_down_s},
+                      {"shift_back_s", &p.shift_back_s},
+                      {"rate_hz", &p.rate_hz}});
+  p.kick_left = read_side(spec, "kick_leg", p.kick_left);
+  try {
+    return {nao_kick_trajectory(model, p), p.rate_hz,
+            std::string("Nao kick, ") + (p.kick_left ? "left" : "right") +
+                format(" leg, %g s", p.duration_s(), 0.0)};
+  } catch (const std::invalid_argument& error) {
+    fail_at_parameter(spec, error);
+  }
+}
+
+}  // namespace
+
+std::optional<NaoScenarioMotion> nao_motion_from_yaml(const YamlValue& motion,
+                                                      const RobotModel& model) {
+  if (const auto walk = motion.find("walk")) return walk_from_yaml(*walk, model);
+  if (const auto kick = motion.find("kick")) return kick_from_yaml(*kick, model);
+  return std::nullopt;
+}
+
+}  // namespace motoflex::detail
