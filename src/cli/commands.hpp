@@ -14,5 +14,6 @@ CommandRunner add_bench_command(CLI::App& app);
 CommandRunner add_fit_command(CLI::App& app);
 CommandRunner add_resume_command(CLI::App& app);
 CommandRunner add_import_bam_command(CLI::App& app);
+CommandRunner add_export_command(CLI::App& app);
 
 }  // namespace motoflex::cli

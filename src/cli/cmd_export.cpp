@@ -1,0 +1,226 @@
+// motoflex export <best.json> --robot DIR --format json|urdf|sdf|mjcf --out FILE
+//                 [--servo KIND] [--flex-sub-bodies N] [--dt S]
+//                 [--check-mujoco LOG.csv [--hold-torso] [--settle S] [--duration S]]
+// Writes a fitted parameter set in another simulator's format, reads the file back with that
+// format's own parser (urdfdom, sdformat, MuJoCo) and prints one JSON line. With
+// --check-mujoco (mjcf only) it also replays LOG's commanded angles in motoflex (ODE) and in
+// MuJoCo on the export and adds the angle RMS and both simulators' steps/s to that line.
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "motoflex/core/error.hpp"
+#include "motoflex/export/json_export.hpp"
+#include "motoflex/export/mjcf_export.hpp"
+#include "motoflex/export/mujoco_check.hpp"
+#include "motoflex/export/parser_check.hpp"
+#include "motoflex/export/sdf_export.hpp"
+#include "motoflex/export/urdf_export.hpp"
+#include "motoflex/io/joint_log.hpp"
+#include "motoflex/model/robot_loader.hpp"
+
+namespace motoflex::cli {
+namespace {
+
+struct ExportArgs {
+  std::string parameters;
+  std::string robot;
+  std::string format;
+  std::string out;
+  std::string servo;
+  int flex_sub_bodies = 1;
+  double dt_s = 0.001;
+  std::string check_log;
+  bool hold_torso = false;
+  double settle_s = 0.0;
+  double duration_s = 0.0;
+  bool no_armature = false;
+};
+
+// The log's commanded angles in model order (the log keeps its own column order), truncated to
+// `duration_s` (0: all); its sidecar's per-log parameters are applied to `parameters`.
+CommandTrajectory read_commands(const RobotModel& model, const std::string& path, double duration_s,
+                                ParameterSet& parameters,
+                                std::map<std::string, double>& log_parameters) {
+  JointLogRequirements requirements;
+  requirements.joints = model.actuator_names();
+  const JointLog log = read_joint_log(path, requirements);
+  if (!log.meta.robot.empty() && log.meta.robot != model.name) {
+    throw InputError(joint_log_sidecar_path(path), 0, "robot",
+                     "log is of robot '" + log.meta.robot + "', exporting '" + model.name + "'");
+  }
+  for (const auto& [name, value] : log.meta.parameters) {
+    if (!parameters.registry().contains(name)) {
+      throw InputError(joint_log_sidecar_path(path), 0, "parameters." + name,
+                       "unknown parameter for robot " + model.name);
+    }
+    parameters.set(name, value);
+    log_parameters[name] = value;
+  }
+  const std::size_t n = model.actuators.size();
+  std::vector<double> times, angles;
+  for (std::size_t f = 0; f < log.frames(); ++f) {
+    if (duration_s > 0.0 && log.time_s[f] - log.time_s.front() > duration_s + 1e-9) break;
+    times.push_back(log.time_s[f]);
+    for (std::size_t j = 0; j < n; ++j) {
+      angles.push_back(log.commanded(f, *log.joint_index(model.actuators[j].name)));
+    }
+  }
+  if (times.size() < 2) throw InputError(path, 0, "--duration", "leaves fewer than 2 frames");
+  return CommandTrajectory(std::move(times), std::move(angles), n);
+}
+
+nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
+  nlohmann::ordered_json per_joint = nlohmann::ordered_json::object();
+  for (std::size_t j = 0; j < c.joints.size(); ++j) per_joint[c.joints[j]] = c.rms_deg_per_joint[j];
+  return {{"rms_deg_per_joint", per_joint},
+          {"rms_deg", c.rms_deg},
+          {"max_abs_deg", c.max_abs_deg},
+          {"steps", c.steps},
+          {"mujoco_steps_per_s", c.mujoco_steps_per_s},
+          {"motoflex_steps_per_s", c.motoflex_steps_per_s},
+          {"motoflex_end", c.motoflex_end}};
+}
+
+int run(const ExportArgs& args) {
+  if (args.format != "json" && args.format != "urdf" && args.format != "sdf" &&
+      args.format != "mjcf") {
+    throw InputError("", 0, "--format", "expected json, urdf, sdf or mjcf");
+  }
+  if (!args.check_log.empty() && args.format != "mjcf") {
+    throw InputError("", 0, "--check-mujoco", "needs --format mjcf");
+  }
+  if (!(args.dt_s > 0.0 && args.dt_s <= 0.01))
+    throw InputError("", 0, "--dt", "must be in (0, 0.01] s");
+  if (args.settle_s < 0.0) throw InputError("", 0, "--settle", "must be >= 0");
+  if (!std::filesystem::exists(std::filesystem::path(args.robot) / "robot.yaml")) {
+    throw InputError(args.robot, 0, "--robot", "no robot.yaml in this folder");
+  }
+  StructureOptions structure;
+  structure.flex_sub_bodies = args.flex_sub_bodies;
+  const RobotModel model = load_robot_model(args.robot, structure);
+  ServoKind servo = model.default_servo;
+  if (!args.servo.empty()) {
+    const auto parsed = parse_servo_kind(args.servo);
+    if (!parsed) throw InputError("", 0, "--servo", "expected motoflex, velocity, ideal or bench");
+    servo = *parsed;
+  }
+  for (const auto& name : required_parameters(model, servo)) {
+    if (!model.parameters.contains(name)) {
+      throw InputError(args.robot, 0, "--servo",
+                       "robot " + model.name + " does not declare '" + name + "' for servo '" +
+                           to_string(servo) + "'");
+    }
+  }
+  ExportInput input{model, ParameterSet(model.parameters), servo, {}, args.dt_s};
+  input.provenance = read_fitted_parameters(args.parameters, model.name, input.parameters);
+
+  // The check's log may carry per-log conditions (a bench's mass or firmware gain): the export
+  // is then made for those conditions, so that the file checked is the file written.
+  std::map<std::string, double> log_parameters;
+  CommandTrajectory commands;
+  if (!args.check_log.empty()) {
+    commands =
+        read_commands(model, args.check_log, args.duration_s, input.parameters, log_parameters);
+  }
+
+  std::string text;
+  std::string parser_complaint;
+  try {
+    if (args.format == "json") {
+      text = export_json(input);
+      if (!nlohmann::json::accept(text)) parser_complaint = "not valid JSON";
+    } else if (args.format == "urdf") {
+      text = export_urdf(input);
+      parser_complaint = urdfdom_errors(text);
+    } else if (args.format == "sdf") {
+      text = export_sdf(input);
+      parser_complaint = sdformat_errors(text);
+    } else {
+      MjcfOptions mjcf;
+      mjcf.armature = !args.no_armature;
+      text = export_mjcf(input, mjcf);
+      parser_complaint = mujoco_errors(text);
+    }
+  } catch (const ModelError& error) {
+    std::fprintf(stderr, "motoflex: cannot export: %s\n", error.what());
+    return 1;
+  }
+  const std::filesystem::path out_dir = std::filesystem::path(args.out).parent_path();
+  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
+  {
+    std::ofstream out(args.out, std::ios::binary);
+    out << text;
+    if (!out) throw InputError(args.out, 0, "--out", "cannot write the file");
+  }
+  if (!parser_complaint.empty()) {
+    std::fprintf(stderr, "motoflex: %s rejects the %s export %s: %s\n",
+                 parser_name(args.format).c_str(), args.format.c_str(), args.out.c_str(),
+                 parser_complaint.c_str());
+    return 1;
+  }
+
+  nlohmann::ordered_json summary;
+  summary["format"] = args.format;
+  summary["out"] = args.out;
+  summary["robot"] = model.name;
+  summary["servo"] = to_string(servo);
+  summary["parameters"] = args.parameters;
+  summary["read_back_by"] = args.format == "json" ? "nlohmann::json" : parser_name(args.format);
+  if (!log_parameters.empty()) summary["log_parameters"] = log_parameters;
+  if (!args.check_log.empty()) {
+    MujocoCheckOptions options;
+    options.settle_s = args.settle_s;
+    options.hold_torso = args.hold_torso;
+    options.armature = !args.no_armature;
+    options.flex_sub_bodies = args.flex_sub_bodies;
+    MujocoComparison comparison;
+    try {
+      comparison = compare_with_mujoco(input, commands, options);
+    } catch (const ModelError& error) {
+      std::fprintf(stderr, "motoflex: MuJoCo check failed: %s\n", error.what());
+      return 1;
+    }
+    summary["check_log"] = args.check_log;
+    summary["hold_torso"] = args.hold_torso;
+    const nlohmann::ordered_json check = comparison_json(comparison);
+    for (const auto& [key, value] : check.items()) summary[key] = value;
+  }
+  std::printf("%s\n", summary.dump().c_str());
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner add_export_command(CLI::App& app) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "export", "write fitted parameters as JSON, URDF, SDF or MJCF, checked by their parsers");
+  sub->add_option("parameters", args->parameters, "best.json of a fit, or a parameter JSON")
+      ->required();
+  sub->add_option("--robot", args->robot, "robot folder (robot.yaml + URDF)")->required();
+  sub->add_option("--format", args->format, "json | urdf | sdf | mjcf")->required();
+  sub->add_option("--out", args->out, "output file")->required();
+  sub->add_option("--servo", args->servo,
+                  "servo law the parameters belong to (default: the robot's)");
+  sub->add_option("--flex-sub-bodies", args->flex_sub_bodies,
+                  "split flexible links into N sub-bodies (SDF/MJCF; default 1 = rigid)");
+  sub->add_option("--dt", args->dt_s, "physics step in s (default 0.001)");
+  sub->add_option("--check-mujoco", args->check_log,
+                  "mjcf: replay this log's commands in motoflex and MuJoCo and compare angles");
+  sub->add_flag("--hold-torso", args->hold_torso,
+                "check: hold the torso in the air (root welded in MuJoCo)");
+  sub->add_option("--settle", args->settle_s, "check: hold the first pose this long first (s)");
+  sub->add_option("--duration", args->duration_s, "check: only the first S seconds of the log");
+  sub->add_flag("--no-armature", args->no_armature,
+                "mjcf: leave the armature out (motoflex's ODE joints have none)");
+  return [args] { return run(*args); };
+}
+
+}  // namespace motoflex::cli

@@ -1,0 +1,235 @@
+#include "motoflex/export/mjcf_export.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "exported_bodies.hpp"
+#include "motoflex/export/actuator_export.hpp"
+#include "xml_writer.hpp"
+
+namespace motoflex {
+namespace {
+
+using detail::ExportedBody;
+using detail::format_number;
+using detail::format_numbers;
+using detail::format_vector;
+using detail::XmlElement;
+
+constexpr int kContactPointsPerFoot = 4;  // motoflex collides each foot box in up to 4 points
+// Impedance close to 1: the contact follows the solref spring-damper (ODE's soft contact has no
+// position-dependent impedance).
+constexpr const char* kContactSolimp = "0.99 0.99 0.001";
+
+struct Writer {
+  const ExportInput& input;
+  const MjcfOptions& options;
+  std::vector<ActuatorExport> actuators;
+  FlexExport flex;
+  std::vector<ExportedBody> bodies;
+  std::vector<std::vector<int>> children;              // body → child bodies
+  Eigen::Vector3d offset_m = Eigen::Vector3d::Zero();  // placement of the whole robot
+  std::string contact_solref;                          // of the feet and the floor
+
+  void add_joint(XmlElement& body, const std::string& name, const Eigen::Vector3d& pos,
+                 const Eigen::Vector3d& axis, int actuator) const {
+    XmlElement& joint = body.child("joint");
+    joint.attribute("name", name).attribute("type", "hinge");
+    joint.attribute("pos", format_vector(pos)).attribute("axis", format_vector(axis));
+    if (actuator < 0) {
+      joint.attribute("limited", "false");
+      return;
+    }
+    const ActuatorExport& a = actuators[actuator];
+    if (a.limited) {
+      joint.attribute("limited", "true")
+          .attribute("range", format_numbers({a.lower_rad, a.upper_rad}));
+    } else {
+      joint.attribute("limited", "false");
+    }
+    joint.attribute("damping", a.damping_nm_s_per_rad).attribute("frictionloss", a.friction_nm);
+    joint.attribute("armature", options.armature ? a.armature_kg_m2 : 0.0);
+  }
+
+  void add_flex_joint(XmlElement& body, const std::string& name, const Eigen::Vector3d& pos,
+                      const Eigen::Vector3d& axis) const {
+    XmlElement& joint = body.child("joint");
+    joint.attribute("name", name).attribute("type", "hinge").attribute("limited", "false");
+    joint.attribute("pos", format_vector(pos)).attribute("axis", format_vector(axis));
+    joint.attribute("stiffness", flex.spring_nm_per_rad)
+        .attribute("damping", flex.damping_nm_s_per_rad)
+        .attribute("frictionloss", flex.friction_nm);
+  }
+
+  void add_geoms(XmlElement& element, const ExportedBody& body) const {
+    for (std::size_t k = 0; k < body.spec->boxes.size(); ++k) {
+      const BoxGeom& box = body.spec->boxes[k];
+      XmlElement& geom = element.child("geom");
+      geom.attribute("name", box.link + "_box" + std::to_string(k)).attribute("type", "box");
+      geom.attribute("size", format_vector(0.5 * box.size_m));
+      geom.attribute("pos", format_vector(box.X_BG.translation()));
+      geom.attribute("quat", detail::format_quaternion_wxyz(box.X_BG.linear()));
+      // Only feet touch the ground (floor: contype 0, conaffinity 1); nothing else collides.
+      geom.attribute("contype", box.is_foot ? "1" : "0").attribute("conaffinity", "0");
+      if (box.is_foot) {
+        // MuJoCo mixes the two geoms' contact parameters: give both the same.
+        geom.attribute("friction", format_numbers({input.parameters.get("contact.mu"), 0.0, 0.0}))
+            .attribute("solref", contact_solref)
+            .attribute("solimp", kContactSolimp);
+      }
+    }
+  }
+
+  void add_body(XmlElement& parent, int b, const Eigen::Vector3d& parent_com) const {
+    const RobotModel& model = input.model;
+    const ExportedBody& body = bodies[b];
+    XmlElement& element = parent.child("body");
+    element.attribute("name", body.spec->name);
+    element.attribute("pos", format_vector(body.com_m - parent_com));
+    if (body.spec->links.size() > 1) {
+      std::string links;
+      for (const auto& l : body.spec->links) links += (links.empty() ? "" : ", ") + l;
+      element.comment("URDF links welded into this body: " + links);
+    }
+    if (b == model.root_body && !model.fixed_base && !options.weld_root) {
+      element.child("joint").attribute("name", "root").attribute("type", "free");
+    }
+    if (body.spec->parent_joint >= 0) {
+      const JointSpec& joint = model.joints[body.spec->parent_joint];
+      // Joint positions are relative to this body's frame (at its CoM).
+      const Eigen::Vector3d pos = joint.anchor_W0_m + offset_m - body.com_m;
+      if (joint.kind == JointKind::kFlex) {
+        add_flex_joint(element, joint.name + "_1", pos, joint.axis1_W0);
+        add_flex_joint(element, joint.name + "_2", pos, joint.axis2_W0);
+      } else {
+        add_joint(element, actuator_or(joint.actuator1, joint.name), pos, joint.axis1_W0,
+                  joint.actuator1);
+        if (joint.kind == JointKind::kUniversal) {
+          add_joint(element, actuator_or(joint.actuator2, joint.name + "_2"), pos, joint.axis2_W0,
+                    joint.actuator2);
+        }
+      }
+    }
+    const Eigen::Matrix3d& I = body.inertia_kg_m2;
+    element.child("inertial")
+        .attribute("pos", "0 0 0")
+        .attribute("mass", body.mass_kg)
+        .attribute("fullinertia",
+                   format_numbers({I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}));
+    add_geoms(element, body);
+    for (const int c : children[b]) add_body(element, c, body.com_m);
+  }
+
+  std::string actuator_or(int actuator, const std::string& fallback) const {
+    return actuator >= 0 ? actuators[actuator].joint : fallback;
+  }
+};
+
+// MuJoCo solref (timeconst, dampratio) of motoflex's ODE soft contact (see mjcf_export.hpp).
+std::pair<double, double> contact_solref(const ExportInput& input, std::size_t foot_boxes) {
+  const double h = input.dt_s;
+  const double erp = input.parameters.get("contact.soft_erp");
+  const double cfm = input.parameters.get("contact.soft_cfm");
+  const double k = erp / (h * cfm);
+  const double c = (1.0 - erp) / cfm;
+  double mass = 0.0;
+  for (const auto& body : input.model.bodies) mass += body.mass_kg;
+  const double m =
+      mass / static_cast<double>(kContactPointsPerFoot * std::max<std::size_t>(foot_boxes, 1));
+  const double timeconst = std::max(2.0 * m / c, 2.0 * h);
+  const double dampratio = c / (2.0 * std::sqrt(k * m));
+  return {timeconst, dampratio};
+}
+
+}  // namespace
+
+std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
+  const RobotModel& model = input.model;
+  Writer w{input, options, export_actuators(input), export_flex(input), {}, {}, {}, {}};
+  std::vector<double> pose = options.placement_pose_rad;
+  if (pose.empty()) pose.assign(model.actuators.size(), 0.0);
+  w.offset_m = detail::placement_offset_m(
+      model, pose, options.clearance_m >= 0.0 ? options.clearance_m : model.initial_clearance_m);
+  w.bodies = detail::exported_bodies(input, w.offset_m, false);
+  w.children.resize(model.bodies.size());
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const int joint = model.bodies[b].parent_joint;
+    if (joint >= 0) w.children[model.joints[joint].parent_body].push_back(static_cast<int>(b));
+  }
+
+  XmlElement mujoco("mujoco");
+  mujoco.attribute("model", model.name);
+  mujoco.comment("Exported by motoflex " + std::string(MOTOFLEX_VERSION) +
+                 " for MuJoCo 2.2.2+ from " +
+                 (input.provenance.source_path.empty() ? std::string("defaults")
+                                                       : input.provenance.source_path) +
+                 "; servo " + detail::servo_description(input.servo) +
+                 ". Lost in MJCF: backlash, gear spring and mass, PID integral, motor "
+                 "inductance, Stribeck/load friction, contact slip, sensor effects (see the JSON "
+                 "export).");
+  mujoco.child("compiler").attribute("angle", "radian").attribute("inertiafromgeom", "false");
+  mujoco.child("option")
+      .attribute("timestep", input.dt_s)
+      .attribute("gravity", "0 0 -9.81")
+      .attribute("integrator", "implicit")
+      .attribute("cone", "pyramidal");
+
+  XmlElement& world = mujoco.child("worldbody");
+  std::size_t foot_boxes = 0;
+  for (const auto& body : model.bodies) {
+    for (const auto& box : body.boxes) foot_boxes += box.is_foot ? 1 : 0;
+  }
+  if (foot_boxes > 0) {
+    const auto [timeconst, dampratio] = contact_solref(input, foot_boxes);
+    w.contact_solref = format_numbers({timeconst, dampratio});
+    world.child("geom")
+        .attribute("name", "floor")
+        .attribute("type", "plane")
+        .attribute("size", "0 0 1")
+        .attribute("contype", "0")
+        .attribute("conaffinity", "1")
+        .attribute("friction", format_numbers({input.parameters.get("contact.mu"), 0.0, 0.0}))
+        .attribute("solref", w.contact_solref)
+        .attribute("solimp", kContactSolimp);
+  }
+  w.add_body(world, model.root_body, Eigen::Vector3d::Zero());
+
+  XmlElement& actuator = mujoco.child("actuator");
+  bool next_angle = false;
+  for (const ActuatorExport& a : w.actuators) {
+    next_angle = next_angle || a.command_is_next_angle;
+    actuator.child("general")
+        .attribute("name", a.joint)
+        .attribute("joint", a.joint)
+        .attribute("gainprm", a.kp_nm_per_rad)
+        .attribute("biastype", "affine")
+        .attribute("biasprm", format_numbers({0.0, -a.kp_nm_per_rad, -a.kv_nm_s_per_rad}))
+        .attribute("forcelimited", "true")
+        .attribute("forcerange", format_numbers({-a.effort_nm, a.effort_nm}));
+  }
+  if (next_angle) {
+    actuator.comment(
+        "ideal servo: set ctrl to the angle the joint must reach at the END of the "
+        "step (motoflex's ideal servo closes the error in one step)");
+  }
+
+  XmlElement& custom = mujoco.child("custom");
+  const ParameterRegistry& registry = input.parameters.registry();
+  for (std::size_t i = 0; i < registry.size(); ++i) {
+    custom.child("numeric")
+        .attribute("name", "motoflex:" + registry.spec(i).name)
+        .attribute("data", input.parameters.get(i));
+  }
+  const FitProvenance& p = input.provenance;
+  std::string provenance = "servo=" + std::string(to_string(input.servo));
+  if (!p.source_path.empty()) provenance += " source=" + p.source_path;
+  if (p.fitness) provenance += " fitness=" + format_number(*p.fitness);
+  if (!p.config_hash.empty()) provenance += " config_hash=" + p.config_hash;
+  if (!p.date.empty()) provenance += " date=" + p.date;
+  if (!p.motoflex_version.empty()) provenance += " fit_motoflex_version=" + p.motoflex_version;
+  provenance += " exported_by=motoflex_" + std::string(MOTOFLEX_VERSION);
+  custom.child("text").attribute("name", "motoflex:provenance").attribute("data", provenance);
+  return mujoco.to_string();
+}
+
+}  // namespace motoflex

@@ -1,0 +1,143 @@
+#include "motoflex/export/mujoco_check.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/export/mjcf_export.hpp"
+#include "motoflex/sim/rollout.hpp"
+#include "mujoco_model.hpp"
+
+namespace motoflex {
+namespace {
+
+// RolloutOptions::hold_torso: "feet 0.1 m above the ground".
+constexpr double kHeldTorsoClearance_m = 0.1;
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The commanded angles motoflex's servos receive at each physics step, as run_rollout samples
+// them: settling steps on the first frame, then the trajectory at t (now) and t + dt (next).
+struct CommandSamples {
+  std::size_t settle_steps = 0;
+  std::size_t steps = 0;          // after settling
+  std::vector<double> now, next;  // [step * joints + joint]
+};
+
+CommandSamples sample_commands(const CommandTrajectory& commands, double dt_s, double settle_s) {
+  CommandSamples out;
+  const std::size_t n = commands.joints();
+  out.settle_steps = static_cast<std::size_t>(std::llround(settle_s / dt_s));
+  out.steps = static_cast<std::size_t>(std::floor(commands.duration_s() / dt_s + 1e-9));
+  out.now.resize(out.steps * n);
+  out.next.resize(out.steps * n);
+  std::size_t hint_now = 0, hint_next = 0;
+  for (std::size_t k = 0; k < out.steps; ++k) {
+    const double t = commands.start_s() + k * dt_s;
+    commands.sample(t, &out.now[k * n], hint_now);
+    commands.sample(t + dt_s, &out.next[k * n], hint_next);
+  }
+  return out;
+}
+
+}  // namespace
+
+MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTrajectory& commands,
+                                     const MujocoCheckOptions& options) {
+  const RobotModel& model = input.model;
+  const std::size_t n = model.actuators.size();
+  if (commands.joints() != n) {
+    throw InputError("", 0, "commands",
+                     "the trajectory has " + std::to_string(commands.joints()) + " joints, robot " +
+                         model.name + " has " + std::to_string(n));
+  }
+  const CommandSamples samples = sample_commands(commands, input.dt_s, options.settle_s);
+  std::vector<double> first(n);
+  for (std::size_t j = 0; j < n; ++j) first[j] = commands.angle_rad(0, j);
+
+  // --- motoflex (ODE) ---------------------------------------------------------------------------
+  RolloutOptions rollout_options;
+  rollout_options.dt_s = input.dt_s;
+  rollout_options.solver = StepSolver::kStep;
+  rollout_options.servo = input.servo;
+  rollout_options.gear_substeps = options.gear_substeps;
+  rollout_options.hold_torso = options.hold_torso;
+  rollout_options.stop_on_fall = false;
+  Rollout rollout(model, input.parameters, rollout_options, first);
+  for (std::size_t k = 0; k < samples.settle_steps; ++k) rollout.step(first.data(), first.data());
+  std::vector<double> ode_angles(samples.steps * n);
+  std::size_t ode_steps = 0;
+  auto start = Clock::now();
+  for (std::size_t k = 0; k < samples.steps; ++k) {
+    if (!rollout.step(&samples.now[k * n], &samples.next[k * n])) break;
+    for (std::size_t j = 0; j < n; ++j) ode_angles[k * n + j] = rollout.joint_angle_rad(j);
+    ++ode_steps;
+  }
+  const double ode_seconds = seconds_since(start);
+
+  // --- MuJoCo ----------------------------------------------------------------------------------
+  MjcfOptions mjcf;
+  mjcf.weld_root = options.hold_torso;
+  mjcf.placement_pose_rad = first;
+  mjcf.clearance_m = options.hold_torso ? kHeldTorsoClearance_m : -1.0;
+  mjcf.armature = options.armature;
+  std::string error;
+  const detail::MjModelPtr m = detail::load_mjcf_text(export_mjcf(input, mjcf), error);
+  if (!m) throw ModelError("MuJoCo cannot load the exported model: " + error);
+  const detail::MjDataPtr d(mj_makeData(m.get()));
+  std::vector<int> qpos(n), actuator(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const char* name = model.actuators[j].name.c_str();
+    const int joint = mj_name2id(m.get(), mjOBJ_JOINT, name);
+    actuator[j] = mj_name2id(m.get(), mjOBJ_ACTUATOR, name);
+    if (joint < 0 || actuator[j] < 0) throw ModelError(std::string("MJCF lacks joint ") + name);
+    qpos[j] = m->jnt_qposadr[joint];
+    d->qpos[qpos[j]] = first[j];
+  }
+  mj_forward(m.get(), d.get());
+  const bool next_angle = input.servo == ServoKind::kIdeal;
+  for (std::size_t k = 0; k < samples.settle_steps; ++k) {
+    for (std::size_t j = 0; j < n; ++j) d->ctrl[actuator[j]] = first[j];
+    mj_step(m.get(), d.get());
+  }
+  std::vector<double> mujoco_angles(samples.steps * n);
+  start = Clock::now();
+  for (std::size_t k = 0; k < samples.steps; ++k) {
+    const double* target = next_angle ? &samples.next[k * n] : &samples.now[k * n];
+    for (std::size_t j = 0; j < n; ++j) d->ctrl[actuator[j]] = target[j];
+    mj_step(m.get(), d.get());
+    for (std::size_t j = 0; j < n; ++j) mujoco_angles[k * n + j] = d->qpos[qpos[j]];
+  }
+  const double mujoco_seconds = seconds_since(start);
+
+  // --- comparison ------------------------------------------------------------------------------
+  MujocoComparison out;
+  out.joints = model.actuator_names();
+  out.steps = ode_steps;
+  out.motoflex_end = to_string(rollout.end());
+  out.mujoco_version = mj_versionString();
+  out.rms_deg_per_joint.assign(n, 0.0);
+  constexpr double kDeg = 180.0 / M_PI;
+  double total = 0.0;
+  for (std::size_t k = 0; k < ode_steps; ++k) {
+    for (std::size_t j = 0; j < n; ++j) {
+      const double e = (mujoco_angles[k * n + j] - ode_angles[k * n + j]) * kDeg;
+      out.rms_deg_per_joint[j] += e * e;
+      out.max_abs_deg = std::max(out.max_abs_deg, std::abs(e));
+      total += e * e;
+    }
+  }
+  if (ode_steps > 0) {
+    for (double& r : out.rms_deg_per_joint) r = std::sqrt(r / ode_steps);
+    out.rms_deg = std::sqrt(total / (ode_steps * n));
+  }
+  out.motoflex_steps_per_s = ode_seconds > 0.0 ? ode_steps / ode_seconds : 0.0;
+  out.mujoco_steps_per_s = mujoco_seconds > 0.0 ? samples.steps / mujoco_seconds : 0.0;
+  return out;
+}
+
+}  // namespace motoflex

@@ -1,0 +1,25 @@
+#pragma once
+
+// Internal to the exporters: MuJoCo models loaded from MJCF text held in memory.
+
+#include <mujoco/mujoco.h>
+
+#include <memory>
+#include <string>
+
+namespace motoflex::detail {
+
+struct MjModelDeleter {
+  void operator()(mjModel* m) const { mj_deleteModel(m); }
+};
+struct MjDataDeleter {
+  void operator()(mjData* d) const { mj_deleteData(d); }
+};
+using MjModelPtr = std::unique_ptr<mjModel, MjModelDeleter>;
+using MjDataPtr = std::unique_ptr<mjData, MjDataDeleter>;
+
+// Compiles `mjcf_text` through a MuJoCo virtual file system. Returns null and fills `error`
+// (MuJoCo's error buffer) when MuJoCo rejects it; a non-empty `error` with a model is a warning.
+MjModelPtr load_mjcf_text(const std::string& mjcf_text, std::string& error);
+
+}  // namespace motoflex::detail
