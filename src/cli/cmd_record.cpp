@@ -76,9 +76,9 @@ int run(const RecordArgs& args) {
   }
   if (recordings.empty()) root.at("recordings").fail("no recordings listed");
 
-  const std::filesystem::path truth_dir =
-      args.truth_out.empty() ? std::filesystem::path(args.out) / "truth"
-                             : std::filesystem::path(args.truth_out);
+  const std::filesystem::path truth_dir = args.truth_out.empty()
+                                              ? std::filesystem::path(args.out) / "truth"
+                                              : std::filesystem::path(args.truth_out);
   for (std::size_t r = 0; r < recordings.size(); ++r) {
     const Recording& recording = recordings[r];
     Scenario scenario = load_scenario(recording.scenario_path, overrides);

@@ -12,9 +12,9 @@
 #include "commands.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
+#include "motoflex/io/plot_script.hpp"
 #include "motoflex/io/rollout_log.hpp"
 #include "motoflex/io/scenario.hpp"
-#include "motoflex/io/plot_script.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -53,7 +53,8 @@ int run(const SimulateArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const RolloutResult result =
       run_rollout(*scenario.model, scenario.parameters, scenario.commands, scenario.rollout);
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.end == RolloutEnd::kModelError) {
     std::fprintf(stderr, "motoflex: cannot simulate %s: %s\n", args.scenario.c_str(),
                  result.end_detail.c_str());
@@ -64,8 +65,8 @@ int run(const SimulateArgs& args) {
   meta.robot = scenario.model->name;
   meta.rate_hz = scenario.log_rate_hz;
   meta.motion = scenario.motion_description;
-  meta.origin = "motoflex simulate " + args.scenario + " (servo " +
-                to_string(scenario.rollout.servo) + ")";
+  meta.origin =
+      "motoflex simulate " + args.scenario + " (servo " + to_string(scenario.rollout.servo) + ")";
   if (result.end != RolloutEnd::kCompleted) {
     meta.notes = std::string("rollout ") + to_string(result.end) + " at " +
                  std::to_string(result.end_time_s) + " s: " + result.end_detail;

@@ -2,13 +2,13 @@
 
 // Runs the built motoflex binary in tests and captures what it printed.
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace motoflex::testing {
 
@@ -39,8 +39,7 @@ inline CommandResult run_motoflex(const std::string& arguments) {
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   {
     std::ifstream in(err);
-    result.stderr_text.assign(std::istreambuf_iterator<char>(in),
-                              std::istreambuf_iterator<char>());
+    result.stderr_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
   std::filesystem::remove(err);
   return result;

@@ -42,8 +42,8 @@ TEST(SimulateBadInput, ScenarioErrorsNameFileLineAndField) {
       {"ill-typed", scenario_text("  settle_s: abc\n", stand), "scenario.yaml:5: physics.settle_s"},
       {"missing motion", "robot: " + kRobot + "\n", "scenario.yaml:1"},
       {"bad solver", scenario_text("  solver: fast\n", stand), "physics.solver"},
-      {"unknown parameter",
-       scenario_text("", stand) + "parameters:\n  motor.R_ohms: 3\n", "parameters.motor.R_ohms"},
+      {"unknown parameter", scenario_text("", stand) + "parameters:\n  motor.R_ohms: 3\n",
+       "parameters.motor.R_ohms"},
       {"bad robot", "robot: /nonexistent\nmotion:\n" + stand, "scenario.yaml:1: robot"},
   };
   for (const auto& c : cases) {
@@ -64,8 +64,8 @@ TEST(SimulateBadInput, LogErrorsNameFileLineAndColumn) {
   const std::string row1 = "0.01,0,0,0,0,0,0,0,0,0,0\n";
   const std::vector<std::pair<std::string, std::string>> logs = {
       {header + row0 + "0.01,0,0,0,0,0,0,0,0,0,nan\n", "log.csv:3"},  // NaN
-      {header + row1 + row0, "log.csv:3"},                               // time goes back
-      {"time_s,LHipRoll.cmd\n0,0\n0.01,0\n", "LHipPitch"},               // missing column
+      {header + row1 + row0, "log.csv:3"},                            // time goes back
+      {"time_s,LHipRoll.cmd\n0,0\n0.01,0\n", "LHipPitch"},            // missing column
       {header + row0 + "0.01,0,0,x,0,0,0,0,0,0,0\n", "log.csv:3: LKneePitch.cmd"},  // not a number
   };
   for (const auto& [log, expected] : logs) {

@@ -56,8 +56,8 @@ struct ScenarioOverrides {
   std::optional<int> gear_substeps;
   std::optional<bool> universal_joints;
   std::optional<double> settle_s;
-  std::optional<double> duration_s;            // truncate the motion
-  bool motion_optional = false;  // a scenario without `motion` is accepted (fits bring logs)
+  std::optional<double> duration_s;  // truncate the motion
+  bool motion_optional = false;      // a scenario without `motion` is accepted (fits bring logs)
 };
 
 // Throws InputError naming file, line and field for anything wrong in the scenario, the robot,
