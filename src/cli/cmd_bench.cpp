@@ -32,9 +32,8 @@ struct BenchArgs {
 
 std::string robot_directory(const std::string& robot) {
   namespace fs = std::filesystem;
-  for (const fs::path& candidate :
-       {fs::path(robot), fs::path("scenarios/robots") / robot,
-        fs::path(MOTOFLEX_SOURCE_DIR) / "scenarios/robots" / robot}) {
+  for (const fs::path& candidate : {fs::path(robot), fs::path("scenarios/robots") / robot,
+                                    fs::path(MOTOFLEX_SOURCE_DIR) / "scenarios/robots" / robot}) {
     if (fs::exists(candidate / "robot.yaml")) return candidate.string();
   }
   throw InputError("", 0, "--robot", "no robot '" + robot + "' (looked for <dir>/robot.yaml)");
@@ -62,12 +61,14 @@ int run(const BenchArgs& args) {
   }
   const ParameterSet parameters(model.parameters);
   const std::vector<double> pose = model.stand_pose_vector();
-  const CommandTrajectory commands = keyframe_trajectory({{0.0, pose}, {args.seconds, pose}}, 100.0);
+  const CommandTrajectory commands =
+      keyframe_trajectory({{0.0, pose}, {args.seconds, pose}}, 100.0);
 
   std::vector<RolloutJob> jobs(args.rollouts, RolloutJob{&model, &parameters, &commands, options});
   const auto start = std::chrono::steady_clock::now();
   const std::vector<RolloutResult> results = run_rollouts(jobs, args.threads);
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::size_t steps = 0;
   for (const auto& r : results) steps += r.physics_steps;

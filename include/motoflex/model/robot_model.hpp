@@ -24,15 +24,15 @@ const char* to_string(ServoKind kind);
 
 // Structural choices made when a robot is loaded (they change bodies and joints, not values).
 struct StructureOptions {
-  int flex_sub_bodies = 1;      // sub-bodies per flexible link (1 = rigid)
+  int flex_sub_bodies = 1;       // sub-bodies per flexible link (1 = rigid)
   bool universal_joints = true;  // merge declared hinge pairs into one ODE universal joint
 };
 
 struct BoxGeom {
-  std::string link;            // URDF link it came from
-  Eigen::Vector3d size_m;      // full edge lengths
-  Eigen::Isometry3d X_BG;      // box pose in its body frame
-  bool is_foot = false;        // may touch the ground without ending the rollout
+  std::string link;        // URDF link it came from
+  Eigen::Vector3d size_m;  // full edge lengths
+  Eigen::Isometry3d X_BG;  // box pose in its body frame
+  bool is_foot = false;    // may touch the ground without ending the rollout
 };
 
 // One ODE body. Body frames have their origin at the CoM and world orientation in the build

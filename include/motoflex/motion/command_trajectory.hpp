@@ -14,8 +14,7 @@ class CommandTrajectory {
   CommandTrajectory() = default;
   // Throws std::invalid_argument unless times strictly increase, there are >= 2 frames and
   // angles has frames × joints entries (frame-major).
-  CommandTrajectory(std::vector<double> time_s, std::vector<double> angles_rad,
-                    std::size_t joints);
+  CommandTrajectory(std::vector<double> time_s, std::vector<double> angles_rad, std::size_t joints);
 
   std::size_t frames() const { return time_s_.size(); }
   std::size_t joints() const { return joints_; }
