@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   runners["fit"] = motoflex::cli::add_fit_command(app);
   runners["resume"] = motoflex::cli::add_resume_command(app);
   runners["import-bam"] = motoflex::cli::add_import_bam_command(app);
+  runners["titan"] = motoflex::cli::add_titan_command(app);
   runners["export"] = motoflex::cli::add_export_command(app);
   try {
     app.parse(argc, argv);
