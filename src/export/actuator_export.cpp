@@ -46,7 +46,7 @@ double subtree_inertia_kg_m2(const RobotModel& model, std::size_t actuator) {
 std::vector<ActuatorExport> export_actuators(const ExportInput& input) {
   const RobotModel& model = input.model;
   // The simulator's own reading of the parameters, so the export sees exactly the numbers a
-  // rollout uses (for the motoflex servo it has already moved B·σ² into the viscous budget).
+  // rollout uses (for the motoflex servo B·σ² is already reflected through the gear).
   const detail::ResolvedParameters resolved =
       detail::resolve_parameters(model, input.parameters, input.servo);
   std::vector<ActuatorExport> out(model.actuators.size());
@@ -67,7 +67,7 @@ std::vector<ActuatorExport> export_actuators(const ExportInput& input) {
         a.kp_nm_per_rad = volts_to_torque * p.pid.kp_v_per_rad;
         a.kv_nm_s_per_rad = volts_to_torque * p.pid.kd_v_s_per_rad;
         a.effort_nm = volts_to_torque * p.motor.supply_v;
-        a.damping_nm_s_per_rad = p.friction.viscous_nm_s_per_rad;  // includes B·σ²
+        a.damping_nm_s_per_rad = p.friction.viscous_nm_s_per_rad + p.back_emf_damping_nm_s_per_rad;
         a.friction_nm = p.friction.coulomb_nm;
         a.reduction = p.gear.ratio;
         a.armature_kg_m2 = p.gear.mass_kg_m2;

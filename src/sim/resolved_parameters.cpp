@@ -76,11 +76,10 @@ ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSe
         a.gear.viscous_nm_s_per_rad = get(gear + "viscous_nm_s_per_rad");
         a.friction = read_friction(get, joint);
         // Algorithm 1's B·ω_m reaches the joint as B·σ²·ω. Applied as an explicit torque it is
-        // unstable at 1 ms on light links (B·σ²·dt/I > 2 at the Nao's ankles), so it joins the
-        // joint's friction budget, which ODE applies implicitly through the zero-velocity motor
-        // row: it opposes the motion with up to B·σ²·|ω| but can never reverse it (BAM's
-        // clipping friction model). The motor itself then sees no speed term.
-        a.friction.viscous_nm_s_per_rad +=
+        // unstable at 1 ms on light links (B·σ²·dt/I > 2 at the Nao's ankles), so the rollout
+        // integrates it implicitly: a zero-velocity motor row with unbounded force and
+        // CFM = 1/(B·σ²), ODE's damper equivalence. The motor itself then sees no speed term.
+        a.back_emf_damping_nm_s_per_rad =
             a.motor.viscous_nm_s_per_rad * a.gear.ratio * a.gear.ratio;
         a.motor.viscous_nm_s_per_rad = 0.0;
         break;

@@ -22,6 +22,9 @@ struct ActuatorParameters {
   JointFrictionParams friction;
   VelocityServoParams velocity;
   BenchServoParams bench;
+  // Algorithm 1's B·ω_m reflected to the joint: B·σ² (N·m·s/rad), a true damper applied
+  // implicitly by its own ODE motor row (motoflex servo only; zero otherwise).
+  double back_emf_damping_nm_s_per_rad = 0.0;
   // What the logging encoder reports: scale·θ + offset (then delay, quantisation, noise). The
   // servo regulates the true angle; these are calibration errors of the reported angle.
   double encoder_scale = 1.0;

@@ -122,6 +122,7 @@ struct Rollout::Impl {
   void build_bodies();
   void build_joints();
   void build_actuators();
+  void add_damping_row(std::size_t actuator, double damping_nm_s_per_rad);
   void place(const std::vector<double>& pose_rad);
   void apply_servos(const double* now_rad, const double* next_rad);
   void apply_flex_springs();
@@ -300,8 +301,42 @@ void Rollout::Impl::build_actuators() {
       pids.emplace_back(p.pid, options.dt_s);
       motors.emplace_back(p.motor, options.dt_s);
       gears.emplace_back(p.gear, options.dt_s, options.gear_substeps);
+      if (p.back_emf_damping_nm_s_per_rad > 0.0)
+        add_damping_row(i, p.back_emf_damping_nm_s_per_rad);
     }
   }
+}
+
+void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_per_rad) {
+  // A linear damper τ = −c·ω integrated implicitly: an angular motor row driving the relative
+  // rate about the actuated axis to zero with unbounded force and CFM = 1/c gives the row force
+  // −c·ω at the end of the step (ODE's spring-damper equivalence with k = 0). It stays stable
+  // for any c·h/I, where an explicit torque diverges once c·h/I > 2.
+  const ActuatorSpec& spec = model.actuators[actuator];
+  const JointSpec& joint = model.joints[spec.joint];
+  dBodyID parent = bodies[joint.parent_body];
+  dBodyID child = bodies[joint.child_body];
+  const Eigen::Vector3d& axis = spec.axis == 1 ? joint.axis1_W0 : joint.axis2_W0;
+  // The axis rides on the body that carries it: a hinge axis is fixed in both bodies, a
+  // universal joint's axis 1 in the parent and axis 2 in the child; a static body is the world.
+  dBodyID carrier =
+      (joint.kind == JointKind::kUniversal || joint.kind == JointKind::kFlex) && spec.axis == 2
+          ? child
+          : parent;
+  dBodyID other = carrier == parent ? child : parent;
+  int frame = 1;  // axis given relative to body1 = carrier
+  if (carrier == nullptr) {
+    std::swap(carrier, other);
+    frame = 0;  // the carrier is the static world: the axis is fixed in the global frame
+  }
+  dJointID motor = dJointCreateAMotor(world, nullptr);
+  dJointAttach(motor, carrier, other);
+  dJointSetAMotorMode(motor, dAMotorUser);
+  dJointSetAMotorNumAxes(motor, 1);
+  dJointSetAMotorAxis(motor, 0, frame, axis.x(), axis.y(), axis.z());
+  dJointSetAMotorParam(motor, dParamVel, 0.0);
+  dJointSetAMotorParam(motor, dParamFMax, dInfinity);
+  dJointSetAMotorParam(motor, dParamCFM, 1.0 / damping_nm_s_per_rad);
 }
 
 void Rollout::Impl::place(const std::vector<double>& pose_rad) {
