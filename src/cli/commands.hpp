@@ -16,5 +16,7 @@ CommandRunner add_resume_command(CLI::App& app);
 CommandRunner add_import_bam_command(CLI::App& app);
 CommandRunner add_titan_command(CLI::App& app);
 CommandRunner add_export_command(CLI::App& app);
+CommandRunner add_residuals_command(CLI::App& app);
+CommandRunner add_loop_command(CLI::App& app);
 
 }  // namespace motoflex::cli

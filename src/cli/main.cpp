@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
   runners["import-bam"] = motoflex::cli::add_import_bam_command(app);
   runners["titan"] = motoflex::cli::add_titan_command(app);
   runners["export"] = motoflex::cli::add_export_command(app);
+  runners["residuals"] = motoflex::cli::add_residuals_command(app);
+  runners["loop"] = motoflex::cli::add_loop_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/effects/effect_library.hpp"
+#include "motoflex/effects/effect_parameters.hpp"
+#include "motoflex/io/atomic_file.hpp"
+#include "motoflex/io/bam_import.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/io/yaml_reader.hpp"
 #include "motoflex_es/checkpoint.hpp"
@@ -72,6 +77,15 @@ std::vector<FreeParameter> read_free(const YamlValue& free, const ParameterSet& 
   return out;
 }
 
+FitBudget read_budget(const YamlValue& budget) {
+  budget.require_keys_within({"generations", "evaluations", "seconds"});
+  FitBudget out;
+  out.max_generations = static_cast<std::uint64_t>(budget.get_int("generations", 0));
+  out.max_evaluations = static_cast<std::uint64_t>(budget.get_int("evaluations", 0));
+  out.max_seconds = budget.get_double("seconds", 0.0);
+  return out;
+}
+
 StrategyConfig read_strategy(const YamlValue& node) {
   node.require_keys_within({"kind", "mu", "lambda", "kappa", "rho", "object_recombination",
                             "step_recombination", "initial_step", "sigma", "population", "restarts",
@@ -119,6 +133,75 @@ StrategyConfig read_strategy(const YamlValue& node) {
   s.polish = node.get_string("polish", "");
   s.polish_evaluations = positive("polish_evaluations", s.polish.empty() ? 0 : 200);
   return s;
+}
+
+bool has_extension(const fs::path& folder, const char* extension) {
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.is_regular_file() && entry.path().extension() == extension) return true;
+  }
+  return false;
+}
+
+// A folder of BAM JSON logs (and no *.csv) is imported into `import_dir`; anything else is
+// listed as it is.
+std::vector<std::string> logs_of(const std::string& folder_or_file, const std::string& field,
+                                 const fs::path& import_dir) {
+  if (fs::is_directory(folder_or_file) && !has_extension(folder_or_file, ".csv") &&
+      has_extension(folder_or_file, ".json")) {
+    std::error_code error;
+    fs::create_directories(import_dir, error);
+    if (error) {
+      throw InputError(import_dir.string(), 0, field, "cannot create: " + error.message());
+    }
+    for (const BamDirectoryItem& item : import_bam_directory(folder_or_file)) {
+      if (!item.import) continue;
+      const fs::path csv = import_dir / (item.output_stem + ".csv");
+      write_joint_log(csv.string(), item.import->log);
+    }
+    return list_logs(import_dir.string(), field);
+  }
+  return list_logs(folder_or_file, field);
+}
+
+// `data:`/`validation:` — a folder, a file, or a list of them (relative to the fit file).
+std::vector<std::string> logs_of_node(const YamlValue& node, const fs::path& import_dir) {
+  std::vector<std::string> out;
+  const std::vector<YamlValue> items = node.is_sequence() ? node.items() : std::vector{node};
+  for (const YamlValue& item : items) {
+    for (auto& log : logs_of(item.resolve_path(item.as_string()), item.field(), import_dir)) {
+      out.push_back(std::move(log));
+    }
+  }
+  return out;
+}
+
+LoopOptions read_loop(const YamlValue& node) {
+  node.require_keys_within({"candidates", "max_iterations", "min_gain", "effects", "refit"});
+  LoopOptions loop;
+  const int candidates = node.get_int("candidates", static_cast<int>(loop.candidates));
+  if (candidates < 1) node.at("candidates").fail("must be >= 1");
+  loop.candidates = static_cast<std::size_t>(candidates);
+  const int iterations = node.get_int("max_iterations", static_cast<int>(loop.max_iterations));
+  if (iterations < 0) node.at("max_iterations").fail("must be >= 0");
+  loop.max_iterations = static_cast<std::size_t>(iterations);
+  loop.min_gain = node.get_double("min_gain", loop.min_gain);
+  if (!(loop.min_gain >= 0.0 && loop.min_gain < 1.0)) {
+    node.at("min_gain").fail("must be in [0, 1)");
+  }
+  if (const auto effects = node.find("effects")) {
+    for (const YamlValue& item : effects->items()) {
+      find_effect(item.as_string(), item.file(), item.line(), item.field());
+      loop.effects.push_back(item.as_string());
+    }
+  }
+  if (const auto refit = node.find("refit")) {
+    refit->require_keys_within({"strategy", "budget"});
+    if (const auto strategy = refit->find("strategy")) {
+      loop.refit_strategy = read_strategy(*strategy);
+    }
+    if (const auto budget = refit->find("budget")) loop.refit_budget = read_budget(*budget);
+  }
+  return loop;
 }
 
 }  // namespace
@@ -210,34 +293,63 @@ FitOverrides overrides_from_json(const nlohmann::json& j) {
 FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides) {
   const YamlValue root = YamlValue::load_file(path);
   root.require_keys_within({"name", "scenario", "data", "logs", "validation", "free", "fixed",
-                            "fitness", "strategy", "budget", "threads", "seed", "out"});
+                            "effects", "fitness", "strategy", "budget", "threads", "seed", "out",
+                            "loop"});
   FitConfig config;
   config.path = fs::absolute(path).lexically_normal();
   config.name = root.get_string("name", fs::path(path).stem().string());
   config.scenario_path = root.resolve_path(root.at("scenario").as_string());
+  config.out_dir = root.has("out") ? root.resolve_path(root.at("out").as_string())
+                                   : (fs::path("runs") / config.name).string();
+  if (overrides.out) config.out_dir = *overrides.out;
+
+  // Effects first: one may need a different model structure (flexible sub-bodies).
+  std::vector<const Effect*> effects;
   ScenarioOverrides scenario_overrides;
   scenario_overrides.motion_optional = true;
+  if (const auto list = root.find("effects")) {
+    for (const YamlValue& item : list->items()) {
+      const Effect& effect = find_effect(item.as_string(), item.file(), item.line(), item.field());
+      if (std::find(effects.begin(), effects.end(), &effect) != effects.end()) {
+        item.fail("effect '" + effect.name + "' is listed twice");
+      }
+      effects.push_back(&effect);
+      config.effects.push_back(effect.name);
+    }
+  }
   config.scenario =
       std::make_shared<const Scenario>(load_scenario(config.scenario_path, scenario_overrides));
+  int flex_needed = 0;
+  for (const Effect* effect : effects) flex_needed = std::max(flex_needed, effect->flex_sub_bodies);
+  if (config.scenario->model->structure.flex_sub_bodies < flex_needed) {
+    scenario_overrides.flex_sub_bodies = flex_needed;
+    config.scenario =
+        std::make_shared<const Scenario>(load_scenario(config.scenario_path, scenario_overrides));
+  }
+  const auto& joints = config.scenario->model->joints;
+  if (scenario_overrides.flex_sub_bodies &&
+      std::none_of(joints.begin(), joints.end(),
+                   [](const JointSpec& j) { return j.kind == JointKind::kFlex; })) {
+    root.at("effects").fail("link_flexibility needs flexible links, and robot " +
+                            config.scenario->model->name + " declares none");
+  }
 
   // Logs: --data wins over `data`/`logs`.
+  const fs::path import_dir = fs::path(config.out_dir) / "imported";
   if (overrides.data) {
-    config.train_logs = list_logs(*overrides.data, "--data");
+    config.train_logs = logs_of(*overrides.data, "--data", import_dir / "train");
   } else if (const auto data = root.find("data")) {
-    config.train_logs = list_logs(data->resolve_path(data->as_string()), "data");
+    config.train_logs = logs_of_node(*data, import_dir / "train");
   } else if (const auto logs = root.find("logs")) {
-    for (const YamlValue& item : logs->items()) {
-      config.train_logs.push_back(
-          list_logs(item.resolve_path(item.as_string()), item.field()).front());
-    }
+    config.train_logs = logs_of_node(*logs, import_dir / "train");
   } else {
     root.fail("give the training logs with `data: FOLDER` or `logs: [...]` (or --data)");
   }
   if (overrides.validation) {
-    config.validation_logs = list_logs(*overrides.validation, "--validation");
-  } else if (const auto validation = root.find("validation")) {
     config.validation_logs =
-        list_logs(validation->resolve_path(validation->as_string()), "validation");
+        logs_of(*overrides.validation, "--validation", import_dir / "validation");
+  } else if (const auto validation = root.find("validation")) {
+    config.validation_logs = logs_of_node(*validation, import_dir / "validation");
   }
 
   ParameterSet base = config.scenario->parameters;
@@ -252,6 +364,31 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
     }
   }
   config.free = read_free(root.at("free"), base);
+  // Each listed effect frees its parameters that are not free or fixed already.
+  for (std::size_t e = 0; e < effects.size(); ++e) {
+    const Effect& effect = *effects[e];
+    const YamlValue item = root.at("effects").items()[e];
+    if (!effect_applies(effect, *config.scenario->model, config.scenario->rollout.servo)) {
+      item.fail("effect '" + effect.name + "' has no hook in robot " +
+                config.scenario->model->name + " with servo " +
+                to_string(config.scenario->rollout.servo));
+    }
+    std::set<std::string> taken, fixed_names;
+    for (const auto& p : config.free) taken.insert(p.targets.begin(), p.targets.end());
+    for (const auto& [name, value] : config.fixed) {
+      taken.insert(name);
+      fixed_names.insert(name);
+    }
+    if (effect_targets(effect, base).empty()) {
+      item.fail("effect '" + effect.name + "' has no parameters in robot " +
+                config.scenario->model->name);
+    }
+    if (effect_covered_by(effect, base, fixed_names)) {
+      item.fail("every parameter of effect '" + effect.name +
+                "' is fixed; remove them from `fixed` or drop the effect");
+    }
+    for (auto& p : effect_free_parameters(effect, base, taken)) config.free.push_back(p);
+  }
 
   if (const auto fitness = root.find("fitness")) {
     fitness->require_keys_within({"m", "settle_s", "weights", "early_termination"});
@@ -272,24 +409,17 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
     }
   }
   config.strategy = root.find("strategy") ? read_strategy(root.at("strategy")) : StrategyConfig{};
-  if (const auto budget = root.find("budget")) {
-    budget->require_keys_within({"generations", "evaluations", "seconds"});
-    config.budget.max_generations = static_cast<std::uint64_t>(budget->get_int("generations", 0));
-    config.budget.max_evaluations = static_cast<std::uint64_t>(budget->get_int("evaluations", 0));
-    config.budget.max_seconds = budget->get_double("seconds", 0.0);
-  }
+  if (const auto budget = root.find("budget")) config.budget = read_budget(*budget);
+  if (const auto loop = root.find("loop")) config.loop = read_loop(*loop);
   config.threads = root.get_int("threads", 1);
   const int seed = root.get_int("seed", 1);
   if (seed < 0) root.at("seed").fail("must be >= 0");
   config.seed = static_cast<std::uint64_t>(seed);
-  config.out_dir = root.has("out") ? root.resolve_path(root.at("out").as_string())
-                                   : (fs::path("runs") / config.name).string();
   if (overrides.threads) config.threads = *overrides.threads;
   if (overrides.seed) config.seed = *overrides.seed;
   if (overrides.max_generations) config.budget.max_generations = *overrides.max_generations;
   if (overrides.max_evaluations) config.budget.max_evaluations = *overrides.max_evaluations;
   if (overrides.max_seconds) config.budget.max_seconds = *overrides.max_seconds;
-  if (overrides.out) config.out_dir = *overrides.out;
   if (config.threads < 1) throw InputError(config.path, 0, "threads", "must be >= 1");
 
   config.space = std::make_shared<ParameterSpace>(config.free, base);
@@ -329,6 +459,8 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
                           {"start", p.start}});
   }
   for (const auto& [name, value] : config.fixed) id["fixed"][name] = value;
+  if (!config.effects.empty()) id["effects"] = config.effects;
+  id["flex_sub_bodies"] = config.scenario->model->structure.flex_sub_bodies;
   id["fitness"] = {{"m", config.fitness.m},
                    {"settle_s", config.fitness.settle_s},
                    {"weights", config.fitness.joint_weights}};

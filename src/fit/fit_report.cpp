@@ -11,16 +11,6 @@ namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
-// First frame that is scored (after settle_s).
-std::size_t first_scored(const FitCase& c, double settle_s) {
-  std::size_t f = 0;
-  while (f < c.commands.frames() &&
-         c.commands.time_s(f) - c.commands.start_s() < settle_s - 1e-12) {
-    ++f;
-  }
-  return f;
-}
-
 }  // namespace
 
 DetailedEvaluation evaluate_in_detail(const FitnessFunction& fitness, const ParameterSet& set) {
@@ -34,8 +24,8 @@ DetailedEvaluation evaluate_in_detail(const FitnessFunction& fitness, const Para
     const RolloutResult& r = out.rollouts[c];
     double case_sum = 0.0;
     std::size_t case_count = 0;
-    for (std::size_t f = first_scored(fit_case, fitness.options().settle_s); f < r.frames_completed;
-         ++f) {
+    for (std::size_t f = first_scored_frame(fit_case, fitness.options().settle_s);
+         f < r.frames_completed; ++f) {
       for (std::size_t j = 0; j < n; ++j) {
         const double e = fit_case.measured_rad[f * n + j] - r.measured_rad[f * n + j];
         sum_per_joint[j] += e * e;

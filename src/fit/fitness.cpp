@@ -6,6 +6,15 @@
 
 namespace motoflex {
 
+std::size_t first_scored_frame(const FitCase& fit_case, double settle_s) {
+  std::size_t first = 0;
+  while (first < fit_case.commands.frames() &&
+         fit_case.commands.time_s(first) - fit_case.commands.start_s() < settle_s - 1e-12) {
+    ++first;
+  }
+  return first;
+}
+
 FitnessFunction::FitnessFunction(std::shared_ptr<const RobotModel> model,
                                  std::vector<FitCase> cases, FitnessOptions options)
     : model_(std::move(model)), cases_(std::move(cases)), options_(std::move(options)) {
@@ -17,11 +26,7 @@ FitnessFunction::FitnessFunction(std::shared_ptr<const RobotModel> model,
     if (c.commands.joints() != n || c.measured_rad.size() != c.commands.frames() * n) {
       throw std::invalid_argument("case " + c.name + ": measured angles do not match the model");
     }
-    std::size_t first = 0;
-    while (first < c.commands.frames() &&
-           c.commands.time_s(first) - c.commands.start_s() < options_.settle_s - 1e-12) {
-      ++first;
-    }
+    const std::size_t first = first_scored_frame(c, options_.settle_s);
     if (first >= c.commands.frames()) {
       throw std::invalid_argument("case " + c.name + ": settle_s covers the whole log");
     }

@@ -278,6 +278,7 @@ BamImport import_document(const json& doc, const std::string& shown,
   }
   if (torque_off_entry) {
     result.torque_off_s = log.time_s[*torque_off_entry];
+    meta.parameters["bench.torque_off_s"] = *result.torque_off_s;
     notes.push_back("torque released at t = " + number_text(*result.torque_off_s) + " s (entry " +
                     std::to_string(*torque_off_entry) +
                     "); the later goal_position values were logged but not followed");

@@ -10,8 +10,9 @@ const std::vector<std::string> kGearLeaves = {"ratio",        "motor_viscous_nm_
                                               "backlash_rad", "spring_nm_per_rad",
                                               "mass_kg_m2",   "viscous_nm_s_per_rad"};
 const std::vector<std::string> kBench = {
-    "bench.kp",    "bench.error_gain",     "bench.max_duty", "bench.supply_v", "bench.Kt_nm_per_a",
-    "bench.R_ohm", "bench.armature_kg_m2", "bench.mass_kg",  "bench.length_m"};
+    "bench.kp",          "bench.error_gain",  "bench.max_duty",       "bench.supply_v",
+    "bench.Kt_nm_per_a", "bench.R_ohm",       "bench.armature_kg_m2", "bench.mass_kg",
+    "bench.length_m",    "bench.torque_off_s"};
 const std::vector<std::string> kCommon = {
     "contact.mu", "contact.soft_erp",       "contact.soft_cfm", "contact.slip",  "world.erp",
     "world.cfm",  "sensor.resolution_bits", "sensor.noise_rad", "sensor.delay_s"};

@@ -96,6 +96,7 @@ ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSe
         a.bench.supply_v = get("bench.supply_v");
         a.bench.torque_constant_nm_per_a = get("bench.Kt_nm_per_a");
         a.bench.resistance_ohm = get("bench.R_ohm");
+        a.bench.torque_off_s = get("bench.torque_off_s");
         a.friction = read_friction(get, joint);
         break;
     }

@@ -427,7 +427,9 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
         const auto& p = params.actuators[i];
         BenchServoParams bench = p.bench;
         bench.resistance_ohm *= 1.0 + params.motor_resistance_drift_per_s * elapsed_s;
-        torque = bench_servo_torque_nm(bench, now_rad[i], q, w, true);
+        // A released H-bridge (BAM lift_and_drop): no drive and no back-EMF braking.
+        const bool enabled = elapsed_s - options.settle_s < bench.torque_off_s;
+        torque = bench_servo_torque_nm(bench, now_rad[i], q, w, enabled);
         const MotorCommand friction = joint_friction(p.friction, w, torque);
         axis.set_motor(friction.velocity_rad_s, friction.fmax_nm);
         break;

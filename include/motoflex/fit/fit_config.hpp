@@ -42,6 +42,24 @@ struct FitBudget {
   double max_seconds = 0.0;
 };
 
+// What `motoflex loop` does with a fit (the `loop:` section of fit.yaml; plain fits ignore it).
+struct LoopOptions {
+  std::size_t candidates = 3;      // top-ranked effects refit per iteration
+  std::size_t max_iterations = 3;  // effects added at most
+  // A candidate is added only if it lowers the validation RMS by at least this fraction and
+  // its validation BIC (n·ln MSE + k·ln n) beats the current model's.
+  double min_gain = 0.05;
+  std::vector<std::string> effects;  // candidates considered (empty: the whole library)
+  StrategyConfig refit_strategy;     // the short warm-started refits
+  FitBudget refit_budget;
+  LoopOptions() {
+    refit_strategy.kind = "cma_es";
+    refit_strategy.sigma = 0.1;
+    refit_strategy.restarts = 0;
+    refit_budget.max_evaluations = 240;
+  }
+};
+
 // Command-line replacements (they win over the file).
 struct FitOverrides {
   std::optional<int> threads;
@@ -64,12 +82,17 @@ struct FitOverrides {
 //     joint.*.friction_nm: {lower: 0.01, upper: 3, log: true}        # one tied value
 //     gear.*.backlash_rad: {lower: 1e-7, upper: 1e-2, each: true}    # one value per match
 //   fixed: {motor.stiffness: 0.7}      # values on top of the robot defaults
+//   effects: [stribeck, sensor_delay]  # frees each effect's parameters (effect_library.hpp)
 //   fitness: {m: 2, settle_s: 0.0, weights: {LKneePitch: 2.0}, early_termination: true}
 //   strategy: {kind: mu_plus_lambda, mu: 10, lambda: 40, kappa: 3}
 //   budget: {generations: 30, evaluations: 2000, seconds: 600}
 //   threads: 2
 //   seed: 1
 //   out: ../../runs/nao_quick
+//   loop: {candidates: 3, max_iterations: 3, min_gain: 0.05, effects: [...],
+//          refit: {strategy: {kind: cma_es, sigma: 0.1}, budget: {evaluations: 240}}}
+// `data` and `validation` take a folder, a file, or a list of them; a folder of BAM JSON logs
+// (and no *.csv) is imported on the fly into <out>/imported/{train,validation}/.
 struct FitConfig {
   std::string path;  // the fit.yaml
   std::string name;
@@ -78,6 +101,8 @@ struct FitConfig {
   std::vector<std::string> validation_logs;  // may be empty
   std::vector<FreeParameter> free;           // expanded patterns, with start values
   std::vector<std::pair<std::string, double>> fixed;
+  std::vector<std::string> effects;  // declared with `effects:` (their parameters are in `free`)
+  LoopOptions loop;
   FitnessOptions fitness;
   StrategyConfig strategy;
   FitBudget budget;

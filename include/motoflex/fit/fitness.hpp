@@ -35,6 +35,9 @@ struct FitCase {
   std::vector<std::pair<std::size_t, double>> parameter_overrides;
 };
 
+// The first frame of a case that is scored (the frames before settle_s only settle the robot).
+std::size_t first_scored_frame(const FitCase& fit_case, double settle_s);
+
 struct CaseScore {
   double squared_error_rad2 = 0.0;  // Σ_t Σ_i w_i (q_real − q_sim)² over scored frames
   std::size_t frames = 0;           // T: scored frames simulated before the end or a fall

@@ -37,6 +37,7 @@ struct BenchServoParams {
   double supply_v = 7.4;                  // supply voltage
   double torque_constant_nm_per_a = 1.0;  // K_t, joint side
   double resistance_ohm = 2.6;            // R
+  double torque_off_s = 1.0e9;            // log time from which the H-bridge is released
 };
 double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
                              double measured_rad, double velocity_rad_s, bool torque_enabled);

@@ -1,0 +1,61 @@
+#pragma once
+
+// `motoflex loop`: fit the base model → rank the effects that could explain its residual →
+// refit the top candidates, each warm-started from the current fit → add the one that lowers the
+// validation error significantly (and wins on a validation BIC that charges its extra
+// parameters) → repeat until nothing helps or the iteration limit. Every fit is an ordinary run
+// dir below the loop's out dir (00_base, 01_<effect>, ...), so a killed loop resumes where it
+// stopped when run again with the same arguments.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "motoflex/effects/effect_signature.hpp"
+#include "motoflex/fit/fit_config.hpp"
+
+namespace motoflex {
+
+struct LoopRefit {
+  std::string effect;
+  std::string run_dir;
+  double train_rms_deg = 0.0;
+  double val_rms_deg = 0.0;
+  double val_mae_rad = 0.0;
+  double val_bic = 0.0;
+  std::size_t free_parameters = 0;
+  std::uint64_t evaluations = 0;
+  double seconds = 0.0;
+  bool significant = false;  // passes the gain and BIC tests
+};
+
+struct LoopIteration {
+  std::string model_run_dir;  // the fit whose residual was ranked
+  EffectRanking ranking;
+  std::vector<LoopRefit> refits;
+  std::string added_effect;  // empty: nothing helped
+  nlohmann::json fitted;     // free parameter → value of the fit after this iteration
+  double train_rms_before_deg = 0.0, train_rms_after_deg = 0.0;
+  double val_rms_before_deg = 0.0, val_rms_after_deg = 0.0;
+  double val_mae_before_rad = 0.0, val_mae_after_rad = 0.0;
+  double ranking_seconds = 0.0;
+};
+
+struct LoopResult {
+  std::string out_dir;
+  std::vector<std::string> base_model;   // effects whose parameters the base fit frees
+  std::vector<std::string> final_model;  // base model + added effects
+  std::string base_run_dir, final_run_dir;
+  std::vector<LoopIteration> iterations;
+  std::uint64_t evaluations = 0;  // of every fit the loop ran (from their summaries)
+  std::uint64_t probe_rollouts = 0;
+  double fit_seconds = 0.0;   // sum of the fits' own wall times
+  double wall_seconds = 0.0;  // this invocation
+};
+
+// Runs the loop of the fit config at `fit_path` (with its `loop:` options) into its out dir and
+// writes loop.json and report.md (with PNG plots) there. Throws InputError when the config has
+// no validation logs (the loop decides on them).
+LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides);
+
+}  // namespace motoflex

@@ -1,0 +1,41 @@
+#pragma once
+
+// A finished fit as later steps use it: its config (rebuilt from run.json exactly as `motoflex
+// resume` does), its best parameter set and its errors on the training and validation logs.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "motoflex/fit/fit_config.hpp"
+#include "motoflex/fit/fit_report.hpp"
+
+namespace motoflex {
+
+struct FinishedFit {
+  FitConfig config;
+  ParameterSet best;
+  nlohmann::json best_json;  // best.json ("free": name → value, "parameters", ...)
+  nlohmann::json summary;    // summary.json
+};
+
+// Throws InputError naming the run dir when it holds no finished fit (no run.json, no
+// summary.json, or a fit that was interrupted: resume it first).
+FinishedFit load_finished_fit(const std::string& run_dir);
+
+// Runs the fit of `config` into config.out_dir unless a finished one is there already: a fit
+// cut short (killed or interrupted) is resumed from its checkpoint, so a killed loop loses at
+// most the generation in flight. Returns the finished fit.
+FinishedFit ensure_fit(const FitConfig& config);
+
+// Error statistics of a parameter set on one list of logs (model units: rad).
+struct ErrorSummary {
+  double rms_deg = 0.0;
+  double mae_rad = 0.0;     // mean absolute error over the scored frames (BAM's metric)
+  std::size_t samples = 0;  // scored frames × joints
+  double bic = 0.0;         // samples·ln(MSE) + free·ln(samples)
+  DetailedEvaluation detail;
+};
+ErrorSummary summarize_errors(const FitnessFunction& fitness, const ParameterSet& set,
+                              std::size_t free_parameters);
+
+}  // namespace motoflex

@@ -1,0 +1,182 @@
+#include "motoflex/effects/effect_loop.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <set>
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/effects/effect_library.hpp"
+#include "motoflex/effects/effect_parameters.hpp"
+#include "motoflex/effects/fit_run.hpp"
+#include "motoflex/effects/loop_report.hpp"
+#include "motoflex/effects/refit_config.hpp"
+
+namespace motoflex {
+namespace {
+
+namespace fs = std::filesystem;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string iteration_dir(const fs::path& out, std::size_t iteration, const std::string& what) {
+  char prefix[8];
+  std::snprintf(prefix, sizeof prefix, "%02zu_", iteration);
+  return (out / (prefix + what)).string();
+}
+
+// The effects a fit already models: those it lists and those whose parameters it all frees.
+std::vector<std::string> modelled_effects(const FitConfig& config) {
+  std::set<std::string> free_names;
+  for (const auto& p : config.free) free_names.insert(p.targets.begin(), p.targets.end());
+  std::vector<std::string> out;
+  for (const Effect& effect : effect_library()) {
+    const bool listed = std::find(config.effects.begin(), config.effects.end(), effect.name) !=
+                        config.effects.end();
+    if (listed || effect_covered_by(effect, config.space->base(), free_names)) {
+      out.push_back(effect.name);
+    }
+  }
+  return out;
+}
+
+struct Evaluated {
+  FinishedFit fit;
+  ErrorSummary train, validation;
+};
+
+Evaluated evaluate(FinishedFit fit) {
+  const std::size_t k = fit.config.space->dimension();
+  ErrorSummary train = summarize_errors(*fit.config.train, fit.best, k);
+  ErrorSummary validation = summarize_errors(*fit.config.validation, fit.best, k);
+  return {std::move(fit), std::move(train), std::move(validation)};
+}
+
+}  // namespace
+
+LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) {
+  const auto start = std::chrono::steady_clock::now();
+  const FitConfig user = load_fit_config(fit_path, overrides);
+  if (user.validation_logs.empty()) {
+    throw InputError(user.path, 0, "validation",
+                     "the loop chooses effects on validation logs: give `validation:` or "
+                     "--validation");
+  }
+  const LoopOptions& options = user.loop;
+  const fs::path out = user.out_dir;
+  fs::create_directories(out);
+  LoopResult result;
+  result.out_dir = out.string();
+
+  FitOverrides base_overrides = overrides;
+  base_overrides.out = iteration_dir(out, 0, "base");
+  std::printf("loop: base fit -> %s\n", base_overrides.out->c_str());
+  std::fflush(stdout);
+  Evaluated current = evaluate(ensure_fit(load_fit_config(fit_path, base_overrides)));
+  result.base_run_dir = current.fit.config.out_dir;
+  result.base_model = modelled_effects(current.fit.config);
+  std::vector<std::string> model = result.base_model;
+  auto account = [&result](const FinishedFit& fit) {
+    result.evaluations += fit.summary.value("evaluations", std::uint64_t{0});
+    result.fit_seconds += fit.summary.value("seconds", 0.0);
+  };
+  account(current.fit);
+
+  for (std::size_t iteration = 1; iteration <= options.max_iterations; ++iteration) {
+    LoopIteration step;
+    step.model_run_dir = current.fit.config.out_dir;
+    step.train_rms_before_deg = current.train.rms_deg;
+    step.val_rms_before_deg = current.validation.rms_deg;
+    step.val_mae_before_rad = current.validation.mae_rad;
+    const auto ranking_start = std::chrono::steady_clock::now();
+    step.ranking = rank_effects(current.fit.config, current.fit.best, options.effects,
+                                current.fit.config.threads);
+    step.ranking_seconds = seconds_since(ranking_start);
+    std::size_t probes = step.ranking.jacobian_rollouts;
+    for (const auto& score : step.ranking.scores) probes += score.scored() ? 1 : 0;
+    result.probe_rollouts += probes * current.fit.config.train->cases().size();
+    std::printf("loop: iteration %zu ranking (%.1f s):", iteration, step.ranking_seconds);
+    for (const auto& score : step.ranking.scores) {
+      if (score.scored()) std::printf(" %s %.3g", score.effect.c_str(), score.delta_bic);
+    }
+    std::printf("\n");
+    std::fflush(stdout);
+
+    std::vector<const EffectScore*> candidates;
+    for (const auto& score : step.ranking.scores) {
+      if (score.scored() && score.delta_bic < 0.0 && candidates.size() < options.candidates) {
+        candidates.push_back(&score);
+      }
+    }
+    std::optional<std::size_t> winner;  // index into refits
+    std::vector<Evaluated> refits;
+    refits.reserve(candidates.size());
+    for (const EffectScore* candidate : candidates) {
+      const std::string dir = iteration_dir(out, iteration, candidate->effect);
+      // Warm start: the linearised optimum of the signature regression (fit parameters too).
+      nlohmann::json start = current.fit.best_json["free"];
+      for (const auto& [name, value] : candidate->fit_start) start[name] = value;
+      const std::string yaml = write_refit_config(
+          current.fit.config, start, find_effect(candidate->effect), candidate->estimate, dir);
+      std::printf("loop: refit with %s -> %s\n", candidate->effect.c_str(), dir.c_str());
+      std::fflush(stdout);
+      FitConfig config = load_fit_config(yaml);
+      config.loop = options;
+      config.threads = current.fit.config.threads;
+      refits.push_back(evaluate(ensure_fit(config)));
+      const Evaluated& refit = refits.back();
+      account(refit.fit);
+      LoopRefit row;
+      row.effect = candidate->effect;
+      row.run_dir = dir;
+      row.train_rms_deg = refit.train.rms_deg;
+      row.val_rms_deg = refit.validation.rms_deg;
+      row.val_mae_rad = refit.validation.mae_rad;
+      row.val_bic = refit.validation.bic;
+      row.free_parameters = refit.fit.config.space->dimension();
+      row.evaluations = refit.fit.summary.value("evaluations", std::uint64_t{0});
+      row.seconds = refit.fit.summary.value("seconds", 0.0);
+      row.significant =
+          refit.validation.rms_deg <= (1.0 - options.min_gain) * current.validation.rms_deg &&
+          refit.validation.bic < current.validation.bic;
+      std::printf("loop:   %s: validation RMS %.4g -> %.4g deg (%s)\n", row.effect.c_str(),
+                  current.validation.rms_deg, row.val_rms_deg,
+                  row.significant ? "significant" : "not significant");
+      std::fflush(stdout);
+      if (row.significant && (!winner || refit.validation.bic < refits[*winner].validation.bic)) {
+        winner = refits.size() - 1;
+      }
+      step.refits.push_back(row);
+    }
+    if (!winner) {
+      step.fitted = current.fit.best_json["free"];
+      step.train_rms_after_deg = current.train.rms_deg;
+      step.val_rms_after_deg = current.validation.rms_deg;
+      step.val_mae_after_rad = current.validation.mae_rad;
+      result.iterations.push_back(std::move(step));
+      std::printf("loop: no candidate improves the validation error significantly; stop\n");
+      break;
+    }
+    step.added_effect = step.refits[*winner].effect;
+    model.push_back(step.added_effect);
+    Evaluated& best = refits[*winner];
+    step.fitted = best.fit.best_json["free"];
+    step.train_rms_after_deg = best.train.rms_deg;
+    step.val_rms_after_deg = best.validation.rms_deg;
+    step.val_mae_after_rad = best.validation.mae_rad;
+    std::printf("loop: added %s\n", step.added_effect.c_str());
+    result.iterations.push_back(std::move(step));
+    best.fit.config.loop = options;
+    current = std::move(best);
+  }
+  result.final_model = model;
+  result.final_run_dir = current.fit.config.out_dir;
+  result.wall_seconds = seconds_since(start);
+  write_loop_outputs(result, user);
+  return result;
+}
+
+}  // namespace motoflex

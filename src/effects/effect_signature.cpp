@@ -1,0 +1,397 @@
+#include "motoflex/effects/effect_signature.hpp"
+
+#include <omp.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "motoflex/effects/effect_library.hpp"
+#include "motoflex/effects/effect_parameters.hpp"
+
+namespace motoflex {
+namespace {
+
+constexpr double kProbeFraction = 0.05;  // probe step of the fit's own parameters (of the width)
+
+// The residual of the current fit: measured − simulated encoders per case, frame-major, with
+// the frames that count (scored and simulated).
+struct Residual {
+  std::vector<std::vector<double>> r_rad;    // per case
+  std::vector<std::vector<double>> sim_rad;  // per case: simulated encoders of the fit
+  std::vector<std::size_t> first_frame;      // per case
+  std::vector<std::size_t> end_frame;        // per case: frames the fit simulated
+  std::size_t joints = 0;
+  double rss = 0.0;
+  std::size_t samples = 0;
+};
+
+Residual residual_of(const FitnessFunction& fitness, const ParameterSet& current) {
+  std::vector<RolloutResult> rollouts;
+  fitness.evaluate(current, std::numeric_limits<double>::infinity(), &rollouts);
+  Residual out;
+  out.joints = fitness.model().actuators.size();
+  for (std::size_t c = 0; c < fitness.cases().size(); ++c) {
+    const FitCase& fit_case = fitness.cases()[c];
+    const RolloutResult& rollout = rollouts[c];
+    const std::size_t first = first_scored_frame(fit_case, fitness.options().settle_s);
+    const std::size_t end = rollout.frames_completed;
+    std::vector<double> r(fit_case.measured_rad.size(), 0.0);
+    for (std::size_t f = first; f < end; ++f) {
+      for (std::size_t j = 0; j < out.joints; ++j) {
+        const std::size_t k = f * out.joints + j;
+        r[k] = fit_case.measured_rad[k] - rollout.measured_rad[k];
+        out.rss += r[k] * r[k];
+        ++out.samples;
+      }
+    }
+    out.r_rad.push_back(std::move(r));
+    out.sim_rad.push_back(rollout.measured_rad);
+    out.first_frame.push_back(first);
+    out.end_frame.push_back(end);
+  }
+  return out;
+}
+
+// Actuators a parameter acts on: joint.<J>.* → J; gear.<G>.* → the joints of group G; anything
+// else → every joint.
+std::vector<std::size_t> owners(const RobotModel& model, const std::string& name) {
+  std::vector<std::size_t> out;
+  const auto dot = name.find('.');
+  const auto second = name.find('.', dot + 1);
+  const std::string head = name.substr(0, dot);
+  const std::string middle =
+      second == std::string::npos ? "" : name.substr(dot + 1, second - dot - 1);
+  for (std::size_t j = 0; j < model.actuators.size(); ++j) {
+    const ActuatorSpec& a = model.actuators[j];
+    if ((head == "joint" && a.name != middle) || (head == "gear" && a.group != middle)) continue;
+    out.push_back(j);
+  }
+  return out;
+}
+
+// The model of `config` with at least `flex_sub_bodies` sub-bodies per flexible link, and its
+// fitness on the training logs; null when the robot has no flexible links.
+std::shared_ptr<const FitnessFunction> variant_fitness(const FitConfig& config,
+                                                       int flex_sub_bodies) {
+  ScenarioOverrides overrides;
+  overrides.motion_optional = true;
+  overrides.flex_sub_bodies = flex_sub_bodies;
+  const Scenario scenario = load_scenario(config.scenario_path, overrides);
+  const auto& joints = scenario.model->joints;
+  if (std::none_of(joints.begin(), joints.end(),
+                   [](const JointSpec& j) { return j.kind == JointKind::kFlex; })) {
+    return nullptr;
+  }
+  return std::make_shared<const FitnessFunction>(
+      scenario.model, load_fit_cases(scenario, config.train_logs), config.fitness);
+}
+
+ParameterSet transfer(const ParameterSet& from, const ParameterRegistry& to) {
+  ParameterSet out(to);
+  for (std::size_t i = 0; i < from.registry().size(); ++i) {
+    const auto index = to.find(from.registry().spec(i).name);
+    if (index) out.set(*index, from.get(i));
+  }
+  return out;
+}
+
+double to_search(const EffectTarget& t, double value) {
+  return t.log_scale ? std::log(std::max(value, t.lower)) : value;
+}
+double to_model(const EffectTarget& t, double coordinate) {
+  return t.log_scale ? std::exp(coordinate) : coordinate;
+}
+
+struct Probe {
+  const Effect* effect = nullptr;
+  std::shared_ptr<const FitnessFunction> fitness;  // the model the probe runs on
+  std::vector<EffectTarget> targets;               // in the probe model's registry
+};
+
+// Search coordinate, probe step and bounds of one probed direction.
+struct Direction {
+  double current = 0.0, step = 0.0, lower = 0.0, upper = 0.0;
+};
+
+Direction direction(double current, double lower, double upper, double fraction) {
+  Direction d{std::clamp(current, lower, upper), fraction * (upper - lower), lower, upper};
+  if (d.current + d.step > upper || d.current + d.step < lower) d.step = -d.step;
+  return d;
+}
+
+// d(simulated encoders) for one probe set: probe − current, per case, frame-major; frames the
+// probe did not reach are 0 (no information).
+std::vector<std::vector<double>> response(const FitnessFunction& fitness, const ParameterSet& set,
+                                          const Residual& residual) {
+  std::vector<RolloutResult> rollouts;
+  fitness.evaluate(set, std::numeric_limits<double>::infinity(), &rollouts);
+  std::vector<std::vector<double>> out(residual.r_rad.size());
+  for (std::size_t c = 0; c < out.size(); ++c) {
+    out[c].assign(residual.r_rad[c].size(), 0.0);
+    const std::size_t end = std::min(residual.end_frame[c], rollouts[c].frames_completed);
+    for (std::size_t f = residual.first_frame[c]; f < end; ++f) {
+      for (std::size_t j = 0; j < residual.joints; ++j) {
+        const std::size_t k = f * residual.joints + j;
+        out[c][k] = rollouts[c].measured_rad[k] - residual.sim_rad[c][k];
+      }
+    }
+  }
+  return out;
+}
+
+// The sensitivity of the simulated encoders to each free parameter of the current fit (one
+// probe each): the directions a refit can already move in.
+struct FitJacobian {
+  std::vector<std::vector<std::vector<double>>> columns;  // per free parameter
+  std::vector<Direction> directions;
+};
+
+FitJacobian fit_jacobian(const FitConfig& config, const ParameterSet& current,
+                         const Residual& residual, int threads) {
+  const ParameterSpace& space = *config.space;
+  FitJacobian out;
+  out.columns.resize(space.dimension());
+  for (std::size_t i = 0; i < space.dimension(); ++i) {
+    const FreeParameter& p = space.free_parameters()[i];
+    out.directions.push_back(direction(space.to_search(i, current.get(p.targets.front())),
+                                       space.lower()[i], space.upper()[i], kProbeFraction));
+  }
+  const int n = static_cast<int>(space.dimension());
+#pragma omp parallel for schedule(dynamic) num_threads(std::max(threads, 1))
+  for (int i = 0; i < n; ++i) {
+    ParameterSet moved = current;
+    const FreeParameter& p = space.free_parameters()[i];
+    const Direction& d = out.directions[i];
+    for (const auto& target : p.targets) moved.set(target, space.to_model(i, d.current + d.step));
+    out.columns[i] = response(*config.train, moved, residual);
+  }
+  return out;
+}
+
+// Least squares of the residual on columns (each a per-case field, restricted to `rows` joints);
+// returns the coefficients and the residual sum of squares.
+struct Column {
+  const std::vector<std::vector<double>>* field;
+  std::vector<std::size_t> joints;  // rows it lives on
+};
+
+Eigen::VectorXd solve(const std::vector<Column>& columns, const Residual& residual, double* rss) {
+  const std::size_t k = columns.size();
+  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(k, k);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k);
+  std::vector<std::vector<char>> on(k, std::vector<char>(residual.joints, 0));
+  for (std::size_t a = 0; a < k; ++a) {
+    for (const std::size_t j : columns[a].joints) on[a][j] = 1;
+  }
+  for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
+    for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {
+      for (std::size_t j = 0; j < residual.joints; ++j) {
+        const std::size_t row = f * residual.joints + j;
+        for (std::size_t a = 0; a < k; ++a) {
+          if (!on[a][j]) continue;
+          const double va = (*columns[a].field)[c][row];
+          rhs(a) += va * residual.r_rad[c][row];
+          for (std::size_t b = a; b < k; ++b) {
+            if (on[b][j]) normal(a, b) += va * (*columns[b].field)[c][row];
+          }
+        }
+      }
+    }
+  }
+  for (std::size_t a = 0; a < k; ++a) {
+    for (std::size_t b = 0; b < a; ++b) normal(a, b) = normal(b, a);
+  }
+  // A tiny ridge keeps collinear directions (e.g. K_t and the viscous term) solvable.
+  const double ridge = 1e-9 * std::max(normal.diagonal().maxCoeff(), 1e-300);
+  normal.diagonal().array() += ridge;
+  const Eigen::VectorXd beta =
+      k == 0 ? Eigen::VectorXd() : Eigen::VectorXd(normal.ldlt().solve(rhs));
+  // RSS = r·r − 2βᵀAᵀr + βᵀAᵀAβ
+  *rss = residual.rss - (k == 0 ? 0.0 : 2.0 * beta.dot(rhs) - beta.dot(normal * beta));
+  return beta;
+}
+
+EffectScore score_probe(const Probe& probe, const Residual& residual, const ParameterSet& current,
+                        const RobotModel& model, const FitConfig& config,
+                        const FitJacobian& jacobian) {
+  EffectScore score;
+  score.effect = probe.effect->name;
+  const Effect& effect = *probe.effect;
+  std::size_t probed = effect.parameters.size();
+  for (std::size_t p = 0; p < effect.parameters.size(); ++p) {
+    if (effect.parameters[p].probe_fraction != 0.0) probed = p;
+  }
+  ParameterSet start = transfer(current, probe.fitness->model().parameters);
+  ParameterSet moved = start;
+  std::vector<Direction> dirs(probe.targets.size());
+  for (std::size_t t = 0; t < probe.targets.size(); ++t) {
+    const EffectTarget& target = probe.targets[t];
+    const double value = std::clamp(start.get(target.name), target.lower, target.upper);
+    const double fraction =
+        target.parameter == probed ? effect.parameters[probed].probe_fraction : 0.0;
+    dirs[t] = direction(to_search(target, value), to_search(target, target.lower),
+                        to_search(target, target.upper), fraction);
+    if (fraction != 0.0) moved.set(target.name, to_model(target, dirs[t].current + dirs[t].step));
+  }
+  const std::vector<std::vector<double>> effect_field = response(*probe.fitness, moved, residual);
+
+  // The fit's own directions first, then one coefficient per target of an `each` parameter (on
+  // its joints' rows) or one for the tied targets of a global parameter (all rows).
+  std::vector<std::size_t> all_joints(residual.joints);
+  for (std::size_t j = 0; j < residual.joints; ++j) all_joints[j] = j;
+  std::vector<Column> columns;
+  for (const auto& field : jacobian.columns) columns.push_back({&field, all_joints});
+  const std::size_t base_columns = columns.size();
+  std::vector<std::vector<std::size_t>> coefficient_targets;
+  for (std::size_t t = 0; t < probe.targets.size(); ++t) {
+    if (probe.targets[t].parameter != probed) continue;
+    if (effect.parameters[probed].each || coefficient_targets.empty()) {
+      coefficient_targets.push_back({t});
+      columns.push_back({&effect_field, owners(model, probe.targets[t].name)});
+    } else {
+      coefficient_targets.back().push_back(t);
+    }
+  }
+  double rss_base = residual.rss, rss_full = residual.rss;
+  const std::vector<Column> base_only(columns.begin(),
+                                      columns.begin() + static_cast<long>(base_columns));
+  solve(base_only, residual, &rss_base);
+  Eigen::VectorXd beta = solve(columns, residual, &rss_full);
+  // Coefficients that imply values outside the bounds (a negative friction) are clipped.
+  for (std::size_t c = 0; c < coefficient_targets.size(); ++c) {
+    for (const std::size_t t : coefficient_targets[c]) {
+      const Direction& d = dirs[t];
+      const double implied =
+          std::clamp(d.current + beta(base_columns + c) * d.step, d.lower, d.upper);
+      beta(base_columns + c) = d.step != 0.0 ? (implied - d.current) / d.step : 0.0;
+    }
+  }
+  std::vector<double> fitted_columns(beta.data(), beta.data() + beta.size());
+  // RSS of the clipped coefficients.
+  double rss_clipped = residual.rss;
+  {
+    std::vector<Column> cols = columns;
+    double sum = 0.0;
+    for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
+      for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {
+        for (std::size_t j = 0; j < residual.joints; ++j) {
+          const std::size_t row = f * residual.joints + j;
+          double e = residual.r_rad[c][row];
+          for (std::size_t a = 0; a < cols.size(); ++a) {
+            if (std::find(cols[a].joints.begin(), cols[a].joints.end(), j) ==
+                cols[a].joints.end()) {
+              continue;
+            }
+            e -= fitted_columns[a] * (*cols[a].field)[c][row];
+          }
+          sum += e * e;
+        }
+      }
+    }
+    rss_clipped = sum;
+  }
+  const double n = static_cast<double>(residual.samples);
+  const double rss1 = std::min(std::max(rss_clipped, 1e-300), rss_base);
+  score.status = "scored";
+  score.coefficients = coefficient_targets.size();
+  score.explained = residual.rss > 0.0 ? (rss_base - rss1) / residual.rss : 0.0;
+  score.delta_bic = n * std::log(rss1 / std::max(rss_base, 1e-300)) +
+                    static_cast<double>(score.coefficients) * std::log(n);
+  // Warm start: the Gauss-Newton step of the fit's parameters and the effect's, clipped.
+  const ParameterSpace& space = *config.space;
+  for (std::size_t i = 0; i < base_columns; ++i) {
+    const Direction& d = jacobian.directions[i];
+    const double coordinate = std::clamp(d.current + beta(i) * d.step, d.lower, d.upper);
+    score.fit_start.emplace_back(space.free_parameters()[i].name, space.to_model(i, coordinate));
+  }
+  for (std::size_t t = 0; t < probe.targets.size(); ++t) {
+    double coordinate = dirs[t].current;
+    for (std::size_t c = 0; c < coefficient_targets.size(); ++c) {
+      for (const std::size_t u : coefficient_targets[c]) {
+        if (u == t) coordinate += beta(base_columns + c) * dirs[t].step;
+      }
+    }
+    score.estimate.emplace_back(probe.targets[t].name, to_model(probe.targets[t], coordinate));
+  }
+  return score;
+}
+
+}  // namespace
+
+EffectRanking rank_effects(const FitConfig& config, const ParameterSet& current,
+                           const std::vector<std::string>& candidates, int threads) {
+  const FitnessFunction& train = *config.train;
+  const RobotModel& model = train.model();
+  std::vector<const Effect*> effects;
+  if (candidates.empty()) {
+    for (const Effect& effect : effect_library()) effects.push_back(&effect);
+  } else {
+    for (const std::string& name : candidates) effects.push_back(&find_effect(name));
+  }
+  std::set<std::string> free_names;
+  for (const auto& p : config.free) free_names.insert(p.targets.begin(), p.targets.end());
+
+  EffectRanking ranking;
+  const Residual residual = residual_of(train, current);
+  ranking.rss0_rad2 = residual.rss;
+  ranking.samples = residual.samples;
+
+  std::vector<Probe> probes;
+  std::vector<EffectScore> unscored;
+  std::map<int, std::shared_ptr<const FitnessFunction>> variants;
+  const auto base = std::shared_ptr<const FitnessFunction>(config.train);
+  for (const Effect* effect : effects) {
+    EffectScore score;
+    score.effect = effect->name;
+    Probe probe{effect, base, {}};
+    if (!effect_applies(*effect, model, config.scenario->rollout.servo)) {
+      score.status = "not applicable";
+    } else if (effect_covered_by(*effect, current, free_names)) {
+      score.status = "in model";
+    } else if (effect->flex_sub_bodies > model.structure.flex_sub_bodies) {
+      auto& variant = variants[effect->flex_sub_bodies];
+      if (!variant) variant = variant_fitness(config, effect->flex_sub_bodies);
+      if (!variant) score.status = "not applicable";
+      probe.fitness = variant;
+    }
+    if (score.status.empty()) {
+      probe.targets = effect_targets(*effect, ParameterSet(probe.fitness->model().parameters));
+      if (probe.targets.empty()) score.status = "no parameters";
+    }
+    if (score.status.empty()) {
+      probes.push_back(probe);
+    } else {
+      unscored.push_back(score);
+    }
+  }
+
+  const FitJacobian jacobian = fit_jacobian(config, current, residual, threads);
+  ranking.jacobian_rollouts = config.space->dimension();
+  std::vector<EffectScore> scored(probes.size());
+  const int n = static_cast<int>(probes.size());
+#pragma omp parallel for schedule(dynamic) num_threads(std::max(threads, 1))
+  for (int i = 0; i < n; ++i) {
+    try {
+      scored[i] = score_probe(probes[i], residual, current, model, config, jacobian);
+    } catch (const std::exception& error) {
+      scored[i].effect = probes[i].effect->name;
+      scored[i].status = std::string("probe failed: ") + error.what();
+    }
+  }
+  std::vector<EffectScore> failed;
+  for (auto& s : scored) {
+    (s.scored() ? ranking.scores : failed).push_back(std::move(s));
+  }
+  std::stable_sort(
+      ranking.scores.begin(), ranking.scores.end(),
+      [](const EffectScore& a, const EffectScore& b) { return a.delta_bic < b.delta_bic; });
+  for (auto& s : failed) ranking.scores.push_back(std::move(s));
+  for (auto& s : unscored) ranking.scores.push_back(std::move(s));
+  return ranking;
+}
+
+}  // namespace motoflex
