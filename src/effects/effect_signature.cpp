@@ -27,6 +27,9 @@ struct Residual {
   std::size_t joints = 0;
   double rss = 0.0;
   std::size_t samples = 0;
+  // A smooth residual carries far fewer independent samples than frames: with lag-1
+  // autocorrelation ρ, N_eff = N·(1 − ρ)/(1 + ρ) (an AR(1) model of the residual).
+  double effective_samples = 0.0;
 };
 
 Residual residual_of(const FitnessFunction& fitness, const ParameterSet& current) {
@@ -34,6 +37,7 @@ Residual residual_of(const FitnessFunction& fitness, const ParameterSet& current
   fitness.evaluate(current, std::numeric_limits<double>::infinity(), &rollouts);
   Residual out;
   out.joints = fitness.model().actuators.size();
+  double lagged = 0.0;
   for (std::size_t c = 0; c < fitness.cases().size(); ++c) {
     const FitCase& fit_case = fitness.cases()[c];
     const RolloutResult& rollout = rollouts[c];
@@ -48,11 +52,19 @@ Residual residual_of(const FitnessFunction& fitness, const ParameterSet& current
         ++out.samples;
       }
     }
+    for (std::size_t f = first + 1; f < end; ++f) {
+      for (std::size_t j = 0; j < out.joints; ++j) {
+        lagged += r[f * out.joints + j] * r[(f - 1) * out.joints + j];
+      }
+    }
     out.r_rad.push_back(std::move(r));
     out.sim_rad.push_back(rollout.measured_rad);
     out.first_frame.push_back(first);
     out.end_frame.push_back(end);
   }
+  const double rho = out.rss > 0.0 ? std::clamp(lagged / out.rss, 0.0, 0.999) : 0.0;
+  out.effective_samples =
+      std::max(2.0, static_cast<double>(out.samples) * (1.0 - rho) / (1.0 + rho));
   return out;
 }
 
@@ -294,7 +306,7 @@ EffectScore score_probe(const Probe& probe, const Residual& residual, const Para
     }
     rss_clipped = sum;
   }
-  const double n = static_cast<double>(residual.samples);
+  const double n = residual.effective_samples;
   const double rss1 = std::min(std::max(rss_clipped, 1e-300), rss_base);
   score.status = "scored";
   score.coefficients = coefficient_targets.size();
@@ -339,6 +351,7 @@ EffectRanking rank_effects(const FitConfig& config, const ParameterSet& current,
   const Residual residual = residual_of(train, current);
   ranking.rss0_rad2 = residual.rss;
   ranking.samples = residual.samples;
+  ranking.effective_samples = residual.effective_samples;
 
   std::vector<Probe> probes;
   std::vector<EffectScore> unscored;

@@ -83,9 +83,11 @@ std::string ranking_markdown(const EffectRanking& ranking) {
     }
   }
   md << "\nN = " << ranking.samples
-     << " residual samples, RSS₀ = " << format("%.4g", ranking.rss0_rad2)
+     << " residual samples (N_eff = " << format("%.0f", ranking.effective_samples)
+     << "), RSS₀ = " << format("%.4g", ranking.rss0_rad2)
      << " rad². Score: share of the residual sum of squares the effect's probe signature "
-        "explains; ΔBIC = N·ln(RSS₁/RSS₀) + k·ln N (negative = supported).\n";
+        "explains beyond re-tuning the fit's own parameters; ΔBIC = N_eff·ln(RSS₁/RSS₀) + "
+        "k·ln N_eff (negative = supported).\n";
   return md.str();
 }
 
@@ -112,6 +114,7 @@ void write_residual_report(const std::string& dir_text, const FitConfig& config,
   }
   json["ranking"] = ranking_json(ranking);
   json["samples"] = ranking.samples;
+  json["effective_samples"] = ranking.effective_samples;
   md << "\n## Candidate effects\n\n"
      << ranking_markdown(ranking)
      << "\nPlots: residual_time.png, residual_vs_velocity.png, residual_vs_torque.png, "

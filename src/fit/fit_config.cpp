@@ -228,6 +228,17 @@ std::vector<FitCase> load_fit_cases(const Scenario& scenario,
   const std::size_t n = model.actuators.size();
   std::vector<FitCase> cases;
   for (const auto& path : log_paths) {
+    // A log of another robot is named as such before its columns are checked.
+    const std::string sidecar = joint_log_sidecar_path(path);
+    if (fs::exists(sidecar)) {
+      const YamlValue meta = YamlValue::load_file(sidecar);
+      const std::string robot = meta.is_map() ? meta.get_string("robot", "") : "";
+      if (!robot.empty() && robot != model.name) {
+        throw InputError(
+            sidecar, meta.at("robot").line(), "robot",
+            "log of robot '" + robot + "', but the fit's scenario simulates '" + model.name + "'");
+      }
+    }
     JointLogRequirements requirements;
     requirements.need_commanded = true;
     requirements.need_measured = true;

@@ -6,8 +6,10 @@
 // i.e. a finite-difference column of the model's Jacobian). The residual is regressed on that
 // shape (one coefficient per joint or gear group for per-joint effects, one for global ones,
 // each coefficient kept within the parameter's bounds); the score is the fraction of the
-// residual sum of squares it explains, and ΔBIC = N·ln(RSS₁/RSS₀) + k·ln N decides the ranking
-// (negative: the effect is supported by the data despite its k extra coefficients). The
+// residual sum of squares it explains, and ΔBIC = N_eff·ln(RSS₁/RSS₀) + k·ln N_eff decides the
+// ranking (negative: the effect is supported by the data despite its k extra coefficients;
+// N_eff discounts the residual's autocorrelation, without which a smooth residual of thousands
+// of frames would "support" any per-joint effect). The
 // regression includes the sensitivities of the fit's own free parameters (one probe each), so
 // an effect is credited only with what re-tuning those parameters cannot explain — a base fit
 // often half-hides a missing effect by bending K_t or the friction (a Gauss-Newton score test).
@@ -39,9 +41,10 @@ struct EffectScore {
 };
 
 struct EffectRanking {
-  std::vector<EffectScore> scores;    // scored effects by ΔBIC (best first), then the others
-  double rss0_rad2 = 0.0;             // residual sum of squares of the current fit
-  std::size_t samples = 0;            // N: scored frames × joints over the training logs
+  std::vector<EffectScore> scores;  // scored effects by ΔBIC (best first), then the others
+  double rss0_rad2 = 0.0;           // residual sum of squares of the current fit
+  std::size_t samples = 0;          // N: scored frames × joints over the training logs
+  double effective_samples = 0.0;   // N_eff = N·(1 − ρ)/(1 + ρ), ρ the lag-1 autocorrelation
   std::size_t jacobian_rollouts = 0;  // probes of the fit's own free parameters
 };
 

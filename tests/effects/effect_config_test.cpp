@@ -1,0 +1,108 @@
+// Effects in fit configs: one line frees an effect's parameters; bad names and effects that
+// cannot apply are one-line errors naming file, line and field.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "../cli/cli_test_support.hpp"
+#include "../fit/fit_test_support.hpp"
+#include "effect_test_support.hpp"
+#include "motoflex/core/error.hpp"
+#include "motoflex/effects/effect_library.hpp"
+#include "motoflex/effects/effect_loop.hpp"
+#include "motoflex/effects/fit_run.hpp"
+
+namespace motoflex::testing {
+namespace {
+
+bool is_free(const FitConfig& config, const std::string& name) {
+  return std::any_of(config.free.begin(), config.free.end(), [&](const FreeParameter& p) {
+    return std::find(p.targets.begin(), p.targets.end(), name) != p.targets.end();
+  });
+}
+
+std::string error_of(const std::string& fit) {
+  try {
+    load_fit_config(fit);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(EffectConfig, OneLineAddsAnEffectsParameters) {
+  const auto dir = fresh_dir("effect_config_add");
+  const FitConfig config =
+      load_fit_config(write_hidden_bench_fit(dir, "none", "{}", "effects: [stribeck]\n"));
+  EXPECT_TRUE(is_free(config, "joint.pendulum.stribeck_nm"));
+  EXPECT_TRUE(is_free(config, "joint.pendulum.stribeck_velocity_rad_s"));
+  EXPECT_EQ(config.space->dimension(), 6u);
+  EXPECT_EQ(config.effects, std::vector<std::string>{"stribeck"});
+}
+
+TEST(EffectConfig, BadEffectsAreOneLineErrors) {
+  const auto dir = fresh_dir("effect_config_bad");
+  const std::string unknown =
+      error_of(write_hidden_bench_fit(dir, "none", "{}", "effects: [stribek]\n"));
+  EXPECT_NE(unknown.find("fit.yaml:"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("unknown effect 'stribek'"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("stribeck"), std::string::npos) << unknown;
+  EXPECT_EQ(std::count(unknown.begin(), unknown.end(), '\n'), 0);
+
+  const std::string fixed = error_of(write_hidden_bench_fit(
+      dir, "none", "{}", "fixed: {sensor.delay_s: 0.01}\neffects: [sensor_delay]\n"));
+  EXPECT_NE(fixed.find("every parameter of effect 'sensor_delay' is fixed"), std::string::npos)
+      << fixed;
+
+  const std::string no_hook =
+      error_of(write_hidden_bench_fit(dir, "none", "{}", "effects: [backlash]\n"));
+  EXPECT_NE(no_hook.find("effect 'backlash' has no hook in robot servo_pendulum"),
+            std::string::npos)
+      << no_hook;
+
+  const std::string loop_effect =
+      error_of(write_hidden_bench_fit(dir, "none", "{effects: [gravity]}"));
+  EXPECT_NE(loop_effect.find("unknown effect 'gravity'"), std::string::npos) << loop_effect;
+}
+
+TEST(EffectConfig, ResidualsNeedAFinishedFit) {
+  const auto dir = fresh_dir("effect_config_unfinished");
+  try {
+    load_finished_fit(dir.string());
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("no finished fit here"), std::string::npos)
+        << error.what();
+  }
+  const CommandResult result = run_motoflex("residuals " + dir.string());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.stderr_text.find("no finished fit here"), std::string::npos);
+}
+
+TEST(EffectConfig, TheLoopNeedsValidationLogsOfTheSameRobot) {
+  const auto dir = fresh_dir("effect_config_loop");
+  const std::string fit = write_hidden_bench_fit(dir, "none", "{}");
+  FitOverrides other_robot;
+  other_robot.validation = std::string(MOTOFLEX_SOURCE_DIR) + "/reference_data/nao/validation";
+  try {
+    run_loop(fit, other_robot);
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("log of robot 'nao'"), std::string::npos)
+        << error.what();
+  }
+  std::string text = read_text(fit);
+  text.erase(text.find("validation:"),
+             text.find('\n', text.find("validation:")) - text.find("validation:") + 1);
+  std::ofstream(fit) << text;
+  try {
+    run_loop(fit, {});
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("validation"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace motoflex::testing

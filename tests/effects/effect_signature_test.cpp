@@ -1,0 +1,83 @@
+// The effect signatures rank the effect that is really missing first: each hidden-effect log
+// of reference_data/hidden/ scored at its own truth with that one effect switched off (no fit
+// involved, so the residual is exactly the effect plus sensor noise).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../cli/cli_test_support.hpp"
+#include "effect_test_support.hpp"
+#include "motoflex/effects/effect_library.hpp"
+#include "motoflex/effects/effect_signature.hpp"
+
+namespace motoflex::testing {
+namespace {
+
+struct HiddenCase {
+  const char* effect;
+  const char* parameter;  // the truth parameter that carries the effect
+  double truth;
+};
+
+const HiddenCase kCases[] = {
+    {"encoder_offset", "joint.pendulum.encoder_offset_rad", 0.03},
+    {"sensor_delay", "sensor.delay_s", 0.015},
+    {"stribeck", "joint.pendulum.stribeck_nm", 0.08},
+    {"load_friction", "joint.pendulum.load_friction", 0.15},
+    {"resistance_drift", "motor.R_drift_per_s", 0.03},
+};
+
+EffectRanking rank_at_truth_without(const std::string& effect, const char* parameter) {
+  const auto dir = fresh_dir("signature_" + effect);
+  const FitConfig config = load_fit_config(write_hidden_bench_fit(dir, effect, "{}"));
+  ParameterSet current = hidden_truth(effect, "train/chirp", config.space->base(), true);
+  if (parameter != nullptr) current.set(parameter, config.space->base().get(parameter));
+  return rank_effects(config, current, {}, 2);
+}
+
+TEST(EffectSignature, TheMissingEffectRanksFirstWithItsMagnitude) {
+  for (const HiddenCase& c : kCases) {
+    const EffectRanking ranking = rank_at_truth_without(c.effect, c.parameter);
+    ASSERT_FALSE(ranking.scores.empty());
+    const EffectScore& top = ranking.scores.front();
+    EXPECT_EQ(top.effect, c.effect);
+    EXPECT_LT(top.delta_bic, 0.0) << c.effect;
+    EXPECT_GT(top.explained, 0.05) << c.effect;
+    // The linearised estimate of the effect's size points the refit the right way.
+    double estimate = 0.0;
+    for (const auto& [name, value] : top.estimate) {
+      if (name == c.parameter) estimate = value;
+    }
+    EXPECT_GT(estimate, 0.3 * c.truth) << c.effect;
+    EXPECT_LT(estimate, 3.0 * c.truth) << c.effect;
+    // The runner-up explains far less of what re-tuning the fit's own parameters cannot.
+    ASSERT_GT(ranking.scores.size(), 1u);
+    EXPECT_LT(ranking.scores[1].explained, 0.5 * top.explained) << c.effect;
+    EXPECT_GT(ranking.scores[1].delta_bic, 0.5 * top.delta_bic) << c.effect;
+  }
+}
+
+TEST(EffectSignature, NothingIsSupportedWhenNothingIsMissing) {
+  const EffectRanking ranking = rank_at_truth_without("none", nullptr);
+  for (const EffectScore& s : ranking.scores) {
+    if (s.scored()) {
+      EXPECT_GT(s.delta_bic, 0.0) << s.effect << " explains noise";
+    }
+  }
+}
+
+TEST(EffectSignature, EffectsTheFitAlreadyFreesOrTheRobotLacksAreNotCandidates) {
+  const EffectRanking ranking = rank_at_truth_without("none", nullptr);
+  for (const EffectScore& s : ranking.scores) {
+    if (s.effect == "coulomb_friction" || s.effect == "viscous_friction") {
+      EXPECT_EQ(s.status, "in model") << s.effect;
+    }
+    if (s.effect == "backlash" || s.effect == "link_flexibility" || s.effect == "foot_slip") {
+      EXPECT_EQ(s.status, "not applicable");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace motoflex::testing
