@@ -23,6 +23,7 @@
 #include "motoflex/export/sdf_export.hpp"
 #include "motoflex/export/urdf_export.hpp"
 #include "motoflex/io/joint_log.hpp"
+#include "motoflex/io/log_commands.hpp"
 #include "motoflex/model/robot_loader.hpp"
 
 namespace motoflex::cli {
@@ -43,37 +44,15 @@ struct ExportArgs {
   bool no_armature = false;
 };
 
-// The log's commanded angles in model order (the log keeps its own column order), truncated to
-// `duration_s` (0: all); its sidecar's per-log parameters are applied to `parameters`.
+// The log's commanded angles in model order, truncated to `duration_s` (0: all); its sidecar's
+// per-log parameters are applied to `parameters`.
 CommandTrajectory read_commands(const RobotModel& model, const std::string& path, double duration_s,
                                 ParameterSet& parameters,
                                 std::map<std::string, double>& log_parameters) {
-  JointLogRequirements requirements;
-  requirements.joints = model.actuator_names();
-  const JointLog log = read_joint_log(path, requirements);
-  if (!log.meta.robot.empty() && log.meta.robot != model.name) {
-    throw InputError(joint_log_sidecar_path(path), 0, "robot",
-                     "log is of robot '" + log.meta.robot + "', exporting '" + model.name + "'");
-  }
-  for (const auto& [name, value] : log.meta.parameters) {
-    if (!parameters.registry().contains(name)) {
-      throw InputError(joint_log_sidecar_path(path), 0, "parameters." + name,
-                       "unknown parameter for robot " + model.name);
-    }
-    parameters.set(name, value);
-    log_parameters[name] = value;
-  }
-  const std::size_t n = model.actuators.size();
-  std::vector<double> times, angles;
-  for (std::size_t f = 0; f < log.frames(); ++f) {
-    if (duration_s > 0.0 && log.time_s[f] - log.time_s.front() > duration_s + 1e-9) break;
-    times.push_back(log.time_s[f]);
-    for (std::size_t j = 0; j < n; ++j) {
-      angles.push_back(log.commanded(f, *log.joint_index(model.actuators[j].name)));
-    }
-  }
-  if (times.size() < 2) throw InputError(path, 0, "--duration", "leaves fewer than 2 frames");
-  return CommandTrajectory(std::move(times), std::move(angles), n);
+  CommandTrajectory commands = read_log_commands(model, path, parameters, log_parameters);
+  if (duration_s > 0.0) commands = truncate_trajectory(commands, duration_s);
+  if (commands.frames() < 2) throw InputError(path, 0, "--duration", "leaves fewer than 2 frames");
+  return commands;
 }
 
 nlohmann::ordered_json comparison_json(const MujocoComparison& c) {

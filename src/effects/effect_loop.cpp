@@ -18,6 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr double kMinExplained = 1e-3;  // a signature that explains less is not refit
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -107,7 +109,10 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) 
 
     std::vector<const EffectScore*> candidates;
     for (const auto& score : step.ranking.scores) {
-      if (score.scored() && score.delta_bic < 0.0 && candidates.size() < options.candidates) {
+      // The ranking orders; the refit on validation logs decides. (ΔBIC over N_eff is a
+      // conservative screen: on a smooth real residual it can leave no effect "supported".)
+      if (score.scored() && score.explained > kMinExplained &&
+          candidates.size() < options.candidates) {
         candidates.push_back(&score);
       }
     }

@@ -5,6 +5,7 @@
 #include "excitation_scenario_motion.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
+#include "motoflex/io/log_commands.hpp"
 #include "motoflex/io/scenario.hpp"
 #include "motoflex/io/yaml_reader.hpp"
 #include "motoflex/model/robot_loader.hpp"
@@ -23,46 +24,6 @@ std::vector<double> pose_from_yaml(const RobotModel& model, const YamlValue& pos
     out[*index] = angle.as_double();
   }
   return out;
-}
-
-CommandTrajectory trajectory_from_log(const RobotModel& model, const std::string& path,
-                                      ParameterSet& parameters, std::string& description,
-                                      std::map<std::string, double>& log_parameters) {
-  JointLogRequirements requirements;
-  requirements.need_commanded = true;
-  requirements.joints = model.actuator_names();
-  const JointLog log = read_joint_log(path, requirements);
-  if (!log.meta.robot.empty() && log.meta.robot != model.name) {
-    throw InputError(
-        joint_log_sidecar_path(path), 0, "robot",
-        "log is of robot '" + log.meta.robot + "', scenario uses '" + model.name + "'");
-  }
-  for (const auto& [name, value] : log.meta.parameters) {
-    if (!parameters.registry().contains(name)) {
-      throw InputError(joint_log_sidecar_path(path), 0, "parameters." + name,
-                       "unknown parameter for robot " + model.name);
-    }
-    parameters.set(name, value);
-    log_parameters[name] = value;
-  }
-  const std::size_t n = model.actuators.size();
-  std::vector<double> angles(log.frames() * n);
-  for (std::size_t j = 0; j < n; ++j) {
-    const std::size_t column = *log.joint_index(model.actuators[j].name);
-    for (std::size_t f = 0; f < log.frames(); ++f) angles[f * n + j] = log.commanded(f, column);
-  }
-  description = log.meta.motion.empty() ? "replay of " + path : log.meta.motion;
-  return CommandTrajectory(log.time_s, std::move(angles), n);
-}
-
-CommandTrajectory truncate(const CommandTrajectory& in, double duration_s) {
-  std::vector<double> times, angles;
-  for (std::size_t f = 0; f < in.frames(); ++f) {
-    if (in.time_s(f) - in.start_s() > duration_s + 1e-9) break;
-    times.push_back(in.time_s(f));
-    for (std::size_t j = 0; j < in.joints(); ++j) angles.push_back(in.angle_rad(f, j));
-  }
-  return CommandTrajectory(std::move(times), std::move(angles), in.joints());
 }
 
 }  // namespace
@@ -150,8 +111,8 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   }
 
   if (overrides.motion_log) {
-    scenario.commands = trajectory_from_log(*model, *overrides.motion_log, scenario.parameters,
-                                            scenario.motion_description, scenario.log_parameters);
+    scenario.commands = read_log_commands(*model, *overrides.motion_log, scenario.parameters,
+                                          scenario.log_parameters, &scenario.motion_description);
   } else if (overrides.motion_optional && !root.has("motion")) {
     scenario.motion_description = "none";
   } else {
@@ -165,8 +126,8 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
     }
     if (const auto log = motion.find("log")) {
       scenario.commands =
-          trajectory_from_log(*model, log->resolve_path(log->as_string()), scenario.parameters,
-                              scenario.motion_description, scenario.log_parameters);
+          read_log_commands(*model, log->resolve_path(log->as_string()), scenario.parameters,
+                            scenario.log_parameters, &scenario.motion_description);
     } else if (const auto keyframes = motion.find("keyframes")) {
       keyframes->require_keys_within({"rate_hz", "frames"});
       const double rate_hz = keyframes->get_double("rate_hz", 100.0);
@@ -217,7 +178,8 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   if (overrides.parameters_json) {
     apply_parameter_json_file(*overrides.parameters_json, scenario.parameters);
   }
-  if (overrides.duration_s) scenario.commands = truncate(scenario.commands, *overrides.duration_s);
+  if (overrides.duration_s)
+    scenario.commands = truncate_trajectory(scenario.commands, *overrides.duration_s);
   return scenario;
 }
 
