@@ -19,13 +19,10 @@ namespace motoflex {
 //    for a constant command),  effort = g·U_bat. The integral term has no counterpart in a
 //    linear position actuator and is dropped. The back-EMF/viscous term B·ω_m reaches the joint
 //    as B·σ²·θ̇ (ω_m = σ·θ̇, τ = σ·T_M) and becomes joint damping, together with the joint's own
-//    viscous friction: damping = joint.viscous + B·σ². Caveat: motoflex applies B·σ² inside the
-//    clipped friction budget of a zero-velocity ODE motor (src/sim/resolved_parameters.cpp),
-//    which can stop a joint within one step but never brake it harder than that; where
-//    B·σ²·dt exceeds the joint's effective inertia (the Nao's ankles, B·σ² = 10.8 and 5.1
-//    N·m·s/rad against ~1e-3 kg·m²) the budget brakes far less than the linear damping B·σ²
-//    does. The export writes the physical damping; see the MuJoCo comparison in
-//    tests/export/mujoco_check_test.cpp for what that difference amounts to.
+//    viscous friction: damping = joint.viscous + B·σ². motoflex integrates B·σ² implicitly as a
+//    linear damper (an unbounded zero-velocity motor row with CFM = 1/(B·σ²), rollout.cpp), as
+//    MuJoCo integrates joint damping; the held-Nao comparison in
+//    tests/export/mujoco_check_test.cpp shows what the rest of the export drops.
 //  * bench (BAM eq. 12–13): τ = K_t/R·U_s·clip(g_e·kp·e, ±d_max) − K_t²/R·θ̇, so
 //    kp_joint = K_t/R·U_s·g_e·kp, kv_joint = 0, effort = K_t/R·U_s·d_max, and the back-EMF
 //    term K_t²/R is joint damping (outside the force limit, as in BAM).
