@@ -16,7 +16,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_residuals import read_series  # noqa: E402
+from plot_residuals import plot_ranking, read_series  # noqa: E402
 
 DEG = 180.0 / math.pi
 
@@ -40,15 +40,9 @@ def main(directory):
 
     with open(os.path.join(directory, "loop.json")) as f:
         loop = json.load(f)
-    if loop["iterations"] and loop["iterations"][0]["ranking"]:
-        ranking = loop["iterations"][0]["ranking"]
-        fig, ax = plt.subplots(figsize=(7, 0.35 * len(ranking) + 1.2))
-        ax.barh([r["effect"] for r in ranking][::-1], [100 * r["score"] for r in ranking][::-1])
-        ax.set_xlabel("residual of the base fit explained (%)")
-        ax.grid(alpha=0.3, axis="x")
-        fig.tight_layout()
-        fig.savefig(os.path.join(directory, "ranking.png"), dpi=90)
-        plt.close(fig)
+    if loop["iterations"]:
+        plot_ranking(loop["iterations"][0]["ranking"], "residual of the base fit explained (%)",
+                     os.path.join(directory, "ranking.png"))
 
 
 if __name__ == "__main__":

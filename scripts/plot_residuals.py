@@ -91,16 +91,22 @@ def main(directory):
     fig.savefig(os.path.join(directory, "residual_lag.png"), dpi=90)
     plt.close(fig)
 
-    scored = [r for r in report["ranking"] if r["status"] == "scored"]
-    if scored:
-        fig, ax = plt.subplots(figsize=(7, 0.35 * len(scored) + 1.2))
-        names = [r["effect"] for r in scored][::-1]
-        ax.barh(names, [100 * r["score"] for r in scored][::-1])
-        ax.set_xlabel("residual explained by the effect's signature (%)")
-        ax.grid(alpha=0.3, axis="x")
-        fig.tight_layout()
-        fig.savefig(os.path.join(directory, "ranking.png"), dpi=90)
-        plt.close(fig)
+    plot_ranking([r for r in report["ranking"] if r["status"] == "scored"],
+                 "residual explained by the effect's signature (%)",
+                 os.path.join(directory, "ranking.png"))
+
+
+def plot_ranking(scored, xlabel, out):
+    """Horizontal bars of the share of the residual each ranked effect explains."""
+    if not scored:
+        return
+    fig, ax = plt.subplots(figsize=(7, 0.35 * len(scored) + 1.2))
+    ax.barh([r["effect"] for r in scored][::-1], [100 * r["score"] for r in scored][::-1])
+    ax.set_xlabel(xlabel)
+    ax.grid(alpha=0.3, axis="x")
+    fig.tight_layout()
+    fig.savefig(out, dpi=90)
+    plt.close(fig)
 
 
 if __name__ == "__main__":

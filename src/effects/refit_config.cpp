@@ -19,26 +19,6 @@ nlohmann::ordered_json free_entry(const FreeParameter& p, double start) {
           {"start", std::clamp(start, p.lower, p.upper)}};
 }
 
-nlohmann::ordered_json strategy_json(const StrategyConfig& s) {
-  nlohmann::ordered_json out = {{"kind", s.kind},
-                                {"mu", s.mu},
-                                {"lambda", s.lambda},
-                                {"kappa", s.kappa},
-                                {"rho", s.rho},
-                                {"object_recombination", s.object_recombination},
-                                {"step_recombination", s.step_recombination},
-                                {"initial_step", s.initial_step},
-                                {"sigma", s.sigma},
-                                {"population", s.population},
-                                {"restarts", s.restarts},
-                                {"algorithm", s.algorithm}};
-  if (!s.polish.empty()) {
-    out["polish"] = s.polish;
-    out["polish_evaluations"] = s.polish_evaluations;
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitted_free,
@@ -88,7 +68,7 @@ std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitt
     }
   }
   fit["fitness"] = fitness;
-  fit["strategy"] = strategy_json(from.loop.refit_strategy);
+  fit["strategy"] = strategy_to_json(from.loop.refit_strategy);
   const FitBudget& budget = from.loop.refit_budget;
   fit["budget"] = {{"generations", budget.max_generations},
                    {"evaluations", budget.max_evaluations},

@@ -122,6 +122,7 @@ StrategyConfig read_strategy(const YamlValue& node) {
   for (const char* key : {"algorithm", "polish"}) {
     if (const auto v = node.find(key)) {
       const std::string text = v->as_string();
+      if (text.empty() && std::string(key) == "polish") continue;  // no polish
       const bool local = text == "bobyqa" || text == "sbplx";
       const bool global = text == "crs2_lm" || text == "isres" || text == "esch";
       if (!(local || (global && std::string(key) == "algorithm"))) {
@@ -273,6 +274,23 @@ std::vector<FitCase> load_fit_cases(const Scenario& scenario,
     cases.push_back(std::move(fit_case));
   }
   return cases;
+}
+
+nlohmann::ordered_json strategy_to_json(const StrategyConfig& s) {
+  return {{"kind", s.kind},
+          {"mu", s.mu},
+          {"lambda", s.lambda},
+          {"kappa", s.kappa},
+          {"rho", s.rho},
+          {"object_recombination", s.object_recombination},
+          {"step_recombination", s.step_recombination},
+          {"initial_step", s.initial_step},
+          {"sigma", s.sigma},
+          {"population", s.population},
+          {"restarts", s.restarts},
+          {"algorithm", s.algorithm},
+          {"polish", s.polish},
+          {"polish_evaluations", s.polish_evaluations}};
 }
 
 nlohmann::json overrides_to_json(const FitOverrides& o) {
@@ -475,21 +493,7 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
   id["fitness"] = {{"m", config.fitness.m},
                    {"settle_s", config.fitness.settle_s},
                    {"weights", config.fitness.joint_weights}};
-  const StrategyConfig& s = config.strategy;
-  id["strategy"] = {{"kind", s.kind},
-                    {"mu", s.mu},
-                    {"lambda", s.lambda},
-                    {"kappa", s.kappa},
-                    {"rho", s.rho},
-                    {"object_recombination", s.object_recombination},
-                    {"step_recombination", s.step_recombination},
-                    {"initial_step", s.initial_step},
-                    {"sigma", s.sigma},
-                    {"population", s.population},
-                    {"restarts", s.restarts},
-                    {"algorithm", s.algorithm},
-                    {"polish", s.polish},
-                    {"polish_evaluations", s.polish_evaluations}};
+  id["strategy"] = strategy_to_json(config.strategy);
   id["seed"] = config.seed;
   config.identity = nlohmann::json(id);
   config.hash = motoflex_es::config_hash(config.identity);

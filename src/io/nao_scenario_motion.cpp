@@ -47,7 +47,8 @@ NaoScenarioMotion walk_from_yaml(const YamlValue& spec, const RobotModel& model)
   spec.require_keys_within({"speed_mm_s", "step_duration_s", "step_height_m",
                             "double_support_ratio", "com_height_m", "foot_spacing_m", "start_s",
                             "stop_s", "duration_s", "rate_hz", "zmp_offset_x_m", "zmp_offset_y_m",
-                            "zmp_travel_x_m", "torso_offset_x_m", "preview_s", "first_swing"});
+                            "zmp_travel_x_m", "toe_off_rad", "heel_strike_rad", "torso_offset_x_m",
+                            "preview_s", "first_swing"});
   NaoWalkParams p;
   read_doubles(spec, {{"speed_mm_s", &p.speed_mm_s},
                       {"step_duration_s", &p.step_duration_s},
@@ -62,6 +63,8 @@ NaoScenarioMotion walk_from_yaml(const YamlValue& spec, const RobotModel& model)
                       {"zmp_offset_x_m", &p.zmp_offset_x_m},
                       {"zmp_offset_y_m", &p.zmp_offset_y_m},
                       {"zmp_travel_x_m", &p.zmp_travel_x_m},
+                      {"toe_off_rad", &p.toe_off_rad},
+                      {"heel_strike_rad", &p.heel_strike_rad},
                       {"torso_offset_x_m", &p.torso_offset_x_m},
                       {"preview_s", &p.preview_s}});
   p.first_swing_left = read_side(spec, "first_swing", p.first_swing_left);

@@ -19,7 +19,8 @@ struct NaoScenarioMotion {
 //   walk: {speed_mm_s: 100, step_duration_s: 1.0, step_height_m: 0.02, double_support_ratio: 0.2,
 //          com_height_m: 0.24, foot_spacing_m: 0.10, start_s: 1, stop_s: 1, duration_s: 10,
 //          rate_hz: 100, zmp_offset_x_m: 0.015, zmp_offset_y_m: 0.02, zmp_travel_x_m: 0.04,
-//          torso_offset_x_m: 0, preview_s: 1.6, first_swing: right}     (NaoWalkParams)
+//          toe_off_rad: 0, heel_strike_rad: 0, torso_offset_x_m: 0, preview_s: 1.6,
+//          first_swing: right}                                           (NaoWalkParams)
 //   kick: {kick_leg: right, com_height_m: 0.24, reach_m: 0.09, kick_s: 0.3, ...} (NaoKickParams)
 // Every key is optional (defaults of the params structs). Returns nullopt when `motion` holds
 // neither key. Throws InputError at the offending field for bad or unreachable values (the

@@ -73,19 +73,19 @@ NaoFootPose nao_leg_forward(LegSide side, const NaoLegAngles& q, const NaoLegGeo
   return pose;
 }
 
-NaoLegAngles nao_leg_inverse(LegSide side, const NaoFootPose& target, const NaoLegGeometry& g) {
+namespace {
+
+// The chain for a sole point at `sole` (torso frame) with orientation R_foot: the five angles
+// when the orientation is one the chain can make, and the yaw coupling M(0,1) that must be 0
+// for it (see below). Throws NaoLegUnreachable when the ankle is beyond the leg length.
+NaoLegAngles solve_chain(const std::string& leg, const Eigen::Vector3d& hip,
+                         const Eigen::Vector3d& sole, const Eigen::Matrix3d& R_foot,
+                         const NaoLegGeometry& g, double& yaw_coupling) {
   using namespace nao_leg;
-  const std::string leg = std::string(to_string(side)) + " leg: ";
-  if (std::abs(target.yaw_rad) > kYawCouplingTolerance) {
-    throw NaoLegUnreachable(leg + format("foot yaw %.4g rad is not reachable: HipYawPitch is held "
-                                         "at 0, so the yaw must be 0",
-                                         target.yaw_rad));
-  }
-  const Eigen::Matrix3d R_foot = rot_y(target.pitch_rad) * rot_x(target.roll_rad);
-  const Eigen::Vector3d ankle = target.position_m + R_foot * Eigen::Vector3d(0, 0, g.foot_height_m);
+  const Eigen::Vector3d ankle = sole + R_foot * Eigen::Vector3d(0, 0, g.foot_height_m);
   // Hip seen from the ankle in the foot frame: v = Rx(−ar)·Ry(−ap)·w with
   // w = (−L1·sin kp, 0, L2 + L1·cos kp), so ar, kp and ap follow from v alone.
-  const Eigen::Vector3d v = R_foot.transpose() * (g.hip_in_torso_m(side) - ankle);
+  const Eigen::Vector3d v = R_foot.transpose() * (hip - ankle);
   const double L1 = g.thigh_m, L2 = g.tibia_m;
   const double d = v.norm();
   if (d > L1 + L2 + 1e-12) {
@@ -108,19 +108,17 @@ NaoLegAngles nao_leg_inverse(LegSide side, const NaoFootPose& target, const NaoL
   // What is left for the hip: Rx(hr)·Ry(θ) = R_foot·Rx(−ar), θ = hp + kp + ap. A matrix of that
   // form has M(0,1) = 0; otherwise the orientation would need HipYawPitch.
   const Eigen::Matrix3d M = R_foot * rot_x(-q[kAnkleRoll]);
-  if (std::abs(M(0, 1)) > kYawCouplingTolerance) {
-    throw NaoLegUnreachable(
-        leg + format("foot roll %.4g rad with pitch %.4g rad is not reachable at this position: "
-                     "with HipYawPitch held at 0 a pitched foot needs hip roll 0 (it would be "
-                     "%.4g rad)",
-                     target.roll_rad, target.pitch_rad, std::atan2(M(2, 1), M(1, 1))));
-  }
+  yaw_coupling = M(0, 1);
   q[kHipRoll] = std::atan2(M(2, 1), M(1, 1));
   const double theta = std::atan2(M(0, 2), M(0, 0));
   q[kHipPitch] = theta - q[kKneePitch] - q[kAnklePitch];
   // Bring the hip pitch into (−π, π].
   q[kHipPitch] = std::remainder(q[kHipPitch], 2.0 * std::numbers::pi);
+  return q;
+}
 
+void check_limits(LegSide side, const std::string& leg, const NaoLegAngles& q,
+                  const NaoLegGeometry& g) {
   const auto& limits = g.limits(side);
   for (int j = 0; j < 5; ++j) {
     if (q[j] < limits[j][0] - kLimitTolerance_rad || q[j] > limits[j][1] + kLimitTolerance_rad) {
@@ -129,7 +127,63 @@ NaoLegAngles nao_leg_inverse(LegSide side, const NaoFootPose& target, const NaoL
                                      limits[j][0], limits[j][1]));
     }
   }
+}
+
+}  // namespace
+
+NaoLegAngles nao_leg_inverse(LegSide side, const NaoFootPose& target, const NaoLegGeometry& g) {
+  const std::string leg = std::string(to_string(side)) + " leg: ";
+  if (std::abs(target.yaw_rad) > kYawCouplingTolerance) {
+    throw NaoLegUnreachable(leg + format("foot yaw %.4g rad is not reachable: HipYawPitch is held "
+                                         "at 0, so the yaw must be 0",
+                                         target.yaw_rad));
+  }
+  const Eigen::Matrix3d R_foot = rot_y(target.pitch_rad) * rot_x(target.roll_rad);
+  double coupling = 0.0;
+  const NaoLegAngles q =
+      solve_chain(leg, g.hip_in_torso_m(side), target.position_m, R_foot, g, coupling);
+  if (std::abs(coupling) > kYawCouplingTolerance) {
+    throw NaoLegUnreachable(
+        leg + format("foot roll %.4g rad with pitch %.4g rad is not reachable at this position: "
+                     "with HipYawPitch held at 0 a pitched foot needs hip roll 0 (it would be "
+                     "%.4g rad)",
+                     target.roll_rad, target.pitch_rad, q[nao_leg::kHipRoll]));
+  }
+  check_limits(side, leg, q, g);
   return q;
+}
+
+NaoLegAngles nao_leg_inverse_edge(LegSide side, const NaoEdgeFoot& target, const NaoLegGeometry& g,
+                                  double* yaw_rad) {
+  if (yaw_rad != nullptr) *yaw_rad = 0.0;
+  if (target.pitch_rad == 0.0) {
+    NaoFootPose flat;
+    flat.position_m = target.edge_m - Eigen::Vector3d(target.edge_x_m, 0.0, 0.0);
+    return nao_leg_inverse(side, flat, g);
+  }
+  const std::string leg = std::string(to_string(side)) + " leg: ";
+  const Eigen::Vector3d hip = g.hip_in_torso_m(side);
+  const Eigen::Vector3d edge_in_foot(target.edge_x_m, 0.0, 0.0);
+  // With R = Rz(ψ)·Ry(θ) the coupling M(0,1) = −sin ψ·cos ar − cos ψ·sin θ·sin ar vanishes for
+  // tan ψ = −sin θ·tan ar; ar itself depends only weakly on ψ (through the sole position), so
+  // the fixed-point iteration contracts by about sin θ·|edge_x|/leg per step.
+  double yaw = 0.0;
+  NaoLegAngles q{};
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const Eigen::Matrix3d R_foot =
+        Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).matrix() * rot_y(target.pitch_rad);
+    double coupling = 0.0;
+    q = solve_chain(leg, hip, target.edge_m - R_foot * edge_in_foot, R_foot, g, coupling);
+    if (std::abs(coupling) <= 1e-13) {
+      check_limits(side, leg, q, g);
+      if (yaw_rad != nullptr) *yaw_rad = yaw;
+      return q;
+    }
+    yaw = std::atan(-std::sin(target.pitch_rad) * std::tan(q[nao_leg::kAnkleRoll]));
+  }
+  throw NaoLegUnreachable(leg + format("no foot yaw solves the leg for pitch %.4g rad about the "
+                                       "edge at x = %.4g m",
+                                       target.pitch_rad, target.edge_x_m));
 }
 
 }  // namespace motoflex

@@ -80,8 +80,19 @@ NaoStance::Legs NaoStance::legs_for_torso(const Eigen::Vector3d& torso_W_m,
           nao_leg_inverse(LegSide::kRight, right, geometry_)};
 }
 
-NaoStance::Solution NaoStance::solve(const Eigen::Vector3d& com_W_m, const NaoFootPose& left_sole_W,
-                                     const NaoFootPose& right_sole_W, const Solution* hint) const {
+NaoStance::Legs NaoStance::legs_for_torso(const Eigen::Vector3d& torso_W_m,
+                                          const NaoEdgeFoot& left_W, const NaoEdgeFoot& right_W,
+                                          double* left_yaw_rad, double* right_yaw_rad) const {
+  NaoEdgeFoot left = left_W, right = right_W;
+  left.edge_m -= torso_W_m;
+  right.edge_m -= torso_W_m;
+  return {nao_leg_inverse_edge(LegSide::kLeft, left, geometry_, left_yaw_rad),
+          nao_leg_inverse_edge(LegSide::kRight, right, geometry_, right_yaw_rad)};
+}
+
+template <typename LegsAt>
+NaoStance::Solution NaoStance::solve_with(const Eigen::Vector3d& com_W_m, const Solution* hint,
+                                          const LegsAt& legs_at) const {
   Solution solution;
   Eigen::Vector3d offset;
   if (hint != nullptr) {
@@ -92,16 +103,32 @@ NaoStance::Solution NaoStance::solve(const Eigen::Vector3d& com_W_m, const NaoFo
   }
   solution.torso_W_m = com_W_m - offset;
   for (int iteration = 0; iteration < kMaxSolveIterations; ++iteration) {
-    solution.legs = legs_for_torso(solution.torso_W_m, left_sole_W, right_sole_W);
+    solution.legs = legs_at(solution.torso_W_m);
     const Eigen::Vector3d next = com_W_m - com_in_torso_m(solution.legs);
     const double change = (next - solution.torso_W_m).norm();
     solution.torso_W_m = next;
     if (change < kSolveTolerance_m) {
-      solution.legs = legs_for_torso(solution.torso_W_m, left_sole_W, right_sole_W);
+      solution.legs = legs_at(solution.torso_W_m);
       return solution;
     }
   }
   throw std::runtime_error("Nao stance: torso position for the requested CoM did not converge");
+}
+
+NaoStance::Solution NaoStance::solve(const Eigen::Vector3d& com_W_m, const NaoFootPose& left_sole_W,
+                                     const NaoFootPose& right_sole_W, const Solution* hint) const {
+  return solve_with(com_W_m, hint, [&](const Eigen::Vector3d& torso_W_m) {
+    return legs_for_torso(torso_W_m, left_sole_W, right_sole_W);
+  });
+}
+
+NaoStance::EdgeSolution NaoStance::solve(const Eigen::Vector3d& com_W_m, const NaoEdgeFoot& left_W,
+                                         const NaoEdgeFoot& right_W, const Solution* hint) const {
+  EdgeSolution solution;
+  static_cast<Solution&>(solution) = solve_with(com_W_m, hint, [&](const Eigen::Vector3d& torso) {
+    return legs_for_torso(torso, left_W, right_W, &solution.left_yaw_rad, &solution.right_yaw_rad);
+  });
+  return solution;
 }
 
 }  // namespace motoflex

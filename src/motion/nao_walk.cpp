@@ -1,5 +1,6 @@
 #include "motoflex/motion/nao_walk.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,13 +15,15 @@ namespace {
 
 using detail::NaoFootsteps;
 
-// Sole outline around the ankle (B-Human robotDimensions, nao.md §1.1): the feet of two legs
-// overlap when the ankles are closer than twice the inner edge.
-constexpr double kSoleBack_m = 0.05;
-constexpr double kSoleFront_m = 0.10;
-constexpr double kSoleInner_m = 0.03877;
-constexpr double kSoleOuter_m = 0.05002;
+using detail::kSoleBack_m;
+using detail::kSoleFront_m;
+using detail::kSoleInner_m;
+using detail::kSoleOuter_m;
 constexpr double kMaxStepHeight_m = 0.10;
+// Sanity bounds of the foot pitch at toe-off and heel strike (57° and 46°): beyond them the
+// rigid sole would stand almost on end; the leg IK checks the joint limits on top of that.
+constexpr double kMaxToeOff_rad = 1.0;
+constexpr double kMaxHeelStrike_rad = 0.8;
 
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
   char buffer[320];
@@ -32,6 +35,14 @@ NaoFootPose flat(const Eigen::Vector3d& position) {
   NaoFootPose pose;
   pose.position_m = position;
   return pose;
+}
+
+// The sole point of a foot pitched about an edge, with the yaw the leg gave it.
+Eigen::Vector3d sole_point(const NaoEdgeFoot& foot, double yaw_rad) {
+  if (foot.pitch_rad == 0.0) return foot.edge_m - Eigen::Vector3d(foot.edge_x_m, 0.0, 0.0);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()).matrix() *
+                            Eigen::AngleAxisd(foot.pitch_rad, Eigen::Vector3d::UnitY()).matrix();
+  return foot.edge_m - R * Eigen::Vector3d(foot.edge_x_m, 0.0, 0.0);
 }
 
 bool stance_reachable(const NaoStance& stance, double com_height_m, double half_step_m,
@@ -118,6 +129,13 @@ std::string NaoWalkParams::validate() const {
         "ankle",
         zmp_offset_y_m, kSoleOuter_m, kSoleInner_m);
   }
+  if (!(toe_off_rad >= 0.0 && toe_off_rad <= kMaxToeOff_rad)) {
+    return format("toe_off_rad = %g: must be within [0, %g] rad", toe_off_rad, kMaxToeOff_rad);
+  }
+  if (!(heel_strike_rad >= 0.0 && heel_strike_rad <= kMaxHeelStrike_rad)) {
+    return format("heel_strike_rad = %g: must be within [0, %g] rad", heel_strike_rad,
+                  kMaxHeelStrike_rad);
+  }
   if (!std::isfinite(torso_offset_x_m) || std::abs(torso_offset_x_m) > 0.05) {
     return format("torso_offset_x_m = %g: must be within [-0.05, 0.05] m", torso_offset_x_m);
   }
@@ -145,8 +163,8 @@ std::string try_plan(const RobotModel& model, const NaoStance& stance, const Nao
   plan.steps = static_cast<int>(footsteps.steps().size());
   plan.walk_start_s = p.start_s;
   plan.walk_end_s = footsteps.walk_end_s();
-  plan.steady_start_s = plan.walk_start_s + footsteps.step_s();
-  plan.steady_end_s = plan.walk_end_s - footsteps.step_s();
+  plan.steady_start_s = plan.walk_start_s + 2.0 * footsteps.step_s();
+  plan.steady_end_s = footsteps.steady_end_s();
 
   // Reference ZMP at the command frames, then the CoM by preview control (one controller per
   // axis; the cart-table axes are independent).
@@ -180,14 +198,22 @@ std::string try_plan(const RobotModel& model, const NaoStance& stance, const Nao
     s.zmp_m = {track_x.zmp_m[f], track_y.zmp_m[f]};
     s.com_m = {track_x.com_m[f], track_y.com_m[f]};
     s.com_accel_m_s2 = {track_x.accel_m_s2[f], track_y.accel_m_s2[f]};
-    footsteps.feet(s.time_s, p.step_height_m, s.left_sole_m, s.right_sole_m, s.support);
+    NaoEdgeFoot left, right;
+    footsteps.feet(s.time_s, p.step_height_m, left, right, s.support);
     const Eigen::Vector3d com(s.com_m.x() + p.torso_offset_x_m, s.com_m.y(), p.com_height_m);
+    NaoStance::EdgeSolution solution;
     try {
-      previous = stance.solve(com, flat(s.left_sole_m), flat(s.right_sole_m),
-                              f == 0 ? nullptr : &previous);
+      solution = stance.solve(com, left, right, f == 0 ? nullptr : &previous);
     } catch (const NaoLegUnreachable& error) {
       return format("at t = %.2f s: ", s.time_s) + error.what();
     }
+    previous = solution;
+    s.left_foot = left;
+    s.right_foot = right;
+    s.left_yaw_rad = solution.left_yaw_rad;
+    s.right_yaw_rad = solution.right_yaw_rad;
+    s.left_sole_m = sole_point(left, solution.left_yaw_rad);
+    s.right_sole_m = sole_point(right, solution.right_yaw_rad);
     s.torso_m = previous.torso_W_m;
     times[f] = s.time_s;
     stance.write_actuator_angles(previous.legs, &angles[f * joints]);
@@ -247,7 +273,11 @@ NaoWalkPlan plan_nao_walk(const RobotModel& model, const NaoWalkParams& p) {
                "reachable %.3f m ",
                p.speed_mm_s, plan.step_length_m, 1e-3 * fastest * p.step_duration_s / 2.0) +
         format("(speed_mm_s <= %g) at com_height_m %g, ", fastest, p.com_height_m) +
-        format("step_duration_s %g; ", p.step_duration_s) + failure);
+        format("step_duration_s %g; ", p.step_duration_s) + failure +
+        (p.toe_off_rad > 0.0 || p.heel_strike_rad > 0.0
+             ? std::string()
+             : std::string("; the feet stay flat: toe_off_rad and heel_strike_rad let them roll "
+                           "over their toe and heel edges for longer steps")));
   }
   throw std::invalid_argument(
       format("com_height_m = %g: even stepping in place is out of reach with foot_spacing_m %g, ",

@@ -41,8 +41,8 @@ class NaoScenarioTest : public ::testing::Test {
 };
 
 TEST_F(NaoScenarioTest, BundledWalksLoadAsPlanned) {
-  for (const auto& [speed, duration] :
-       std::vector<std::pair<int, int>>{{50, 1}, {100, 1}, {150, 1}, {200, 1}, {50, 2}, {100, 2}}) {
+  for (const auto& [speed, duration] : std::vector<std::pair<int, int>>{
+           {50, 1}, {100, 1}, {150, 1}, {200, 1}, {50, 2}, {100, 2}, {150, 2}, {200, 2}}) {
     const std::string name = "nao_walk_" + std::to_string(speed) + "_" + std::to_string(duration);
     const Scenario scenario = load_scenario(kWalks + name + ".yaml");
     EXPECT_EQ(scenario.name, name);
@@ -53,6 +53,11 @@ TEST_F(NaoScenarioTest, BundledWalksLoadAsPlanned) {
     NaoWalkParams p;
     p.speed_mm_s = speed;
     p.step_duration_s = duration;
+    if (duration == 2 && speed > 100) {  // 0.15 and 0.2 m steps: toe-off and heel strike
+      p.double_support_ratio = 0.4;
+      p.toe_off_rad = 0.8;
+      p.heel_strike_rad = 0.6;
+    }
     const CommandTrajectory expected = nao_walk_trajectory(*scenario.model, p);
     EXPECT_EQ(scenario.commands.angles_rad(), expected.angles_rad()) << name;
     EXPECT_NE(scenario.motion_description.find("walk"), std::string::npos);
@@ -64,7 +69,8 @@ TEST_F(NaoScenarioTest, BundledWalksLoadAsPlanned) {
 TEST_F(NaoScenarioTest, OptionsReachThePlanner) {
   const Scenario walk = load_scenario(
       write("  walk: {speed_mm_s: 80, step_duration_s: 1.2, duration_s: 6, rate_hz: 50,\n"
-            "         com_height_m: 0.245, first_swing: left}\n"));
+            "         com_height_m: 0.245, first_swing: left, toe_off_rad: 0.5,\n"
+            "         heel_strike_rad: 0.3}\n"));
   EXPECT_NEAR(walk.commands.duration_s(), 6.0, 1e-9);
   EXPECT_EQ(walk.commands.frames(), 301u);
   NaoWalkParams p;
@@ -74,6 +80,8 @@ TEST_F(NaoScenarioTest, OptionsReachThePlanner) {
   p.rate_hz = 50;
   p.com_height_m = 0.245;
   p.first_swing_left = true;
+  p.toe_off_rad = 0.5;
+  p.heel_strike_rad = 0.3;
   EXPECT_EQ(walk.commands.angles_rad(), nao_walk_trajectory(*walk.model, p).angles_rad());
 
   const Scenario kick = load_scenario(write("  kick: {kick_leg: left, reach_m: 0.08}\n"));
@@ -101,6 +109,11 @@ TEST_F(NaoScenarioTest, InfeasibleValuesFailAtTheirField) {
             "speed_mm_s = 200"},
            {"  walk: {first_swing: middle}\n", 4, "motion.walk.first_swing",
             "expected 'left' or 'right'"},
+           {"  walk:\n    speed_mm_s: 100\n    toe_off_rad: 1.5\n", 6, "motion.walk.toe_off_rad",
+            "toe_off_rad = 1.5: must be within [0, 1] rad"},
+           {"  walk:\n    speed_mm_s: 250\n    step_duration_s: 2\n    toe_off_rad: 0.8\n"
+            "    heel_strike_rad: 0.6\n    double_support_ratio: 0.4\n",
+            5, "motion.walk.speed_mm_s", "speed_mm_s = 250: step length 0.250 m"},
            {"  walk: {speed: 100}\n", 4, "motion.walk.speed", ""},
            {"  kick:\n    reach_m: 0.3\n", 4, "motion.kick", "kick phase 'kick'"},
            {"  kick:\n    kick_s: -1\n", 5, "motion.kick.kick_s", "kick_s = -1: must be positive"},

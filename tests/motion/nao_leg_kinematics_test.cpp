@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -162,6 +163,77 @@ TEST(NaoLegKinematics, LimitsMatchTheModel) {
       EXPECT_DOUBLE_EQ(from_model.left_limits_rad[j][k], defaults.left_limits_rad[j][k]);
       EXPECT_DOUBLE_EQ(from_model.right_limits_rad[j][k], defaults.right_limits_rad[j][k]);
     }
+  }
+}
+
+// A foot pitched about its toe or heel edge under a hip that is off to the side: the leg has
+// no hip yaw, so the foot turns a little (tan ψ = −sin(pitch)·tan(AnkleRoll)), but the edge
+// stays on target, horizontal (roll 0) and the pitch is the one asked for; FK(IK(x)) = x.
+TEST(NaoLegKinematics, EdgeFootKeepsItsEdgeOnTargetWithTheYawTheLegNeeds) {
+  int solved = 0, turned = 0;
+  for (const LegSide side : {LegSide::kLeft, LegSide::kRight}) {
+    const double hip_y = side == LegSide::kLeft ? 0.05 : -0.05;
+    for (const double edge_x : {0.10, -0.05}) {
+      for (const double pitch : {0.3, 0.6, -0.2, -0.5}) {
+        for (double x = -0.12; x <= 0.1201; x += 0.04) {
+          for (double dy = -0.02; dy <= 0.0201; dy += 0.01) {
+            for (double z = -0.30; z <= -0.2199; z += 0.02) {
+              NaoEdgeFoot target;
+              target.edge_m = {x, hip_y + dy, z};
+              target.edge_x_m = edge_x;
+              target.pitch_rad = pitch;
+              double yaw = 1.0;
+              NaoLegAngles q;
+              try {
+                q = nao_leg_inverse_edge(side, target, {}, &yaw);
+              } catch (const NaoLegUnreachable&) {
+                continue;
+              }
+              const NaoFootPose fk = nao_leg_forward(side, q);
+              const Eigen::Matrix3d R = (Eigen::AngleAxisd(fk.yaw_rad, Eigen::Vector3d::UnitZ()) *
+                                         Eigen::AngleAxisd(fk.pitch_rad, Eigen::Vector3d::UnitY()) *
+                                         Eigen::AngleAxisd(fk.roll_rad, Eigen::Vector3d::UnitX()))
+                                            .matrix();
+              const Eigen::Vector3d edge = fk.position_m + R * Eigen::Vector3d(edge_x, 0, 0);
+              EXPECT_NEAR((edge - target.edge_m).norm(), 0.0, 1e-9);
+              EXPECT_NEAR(fk.pitch_rad, pitch, 1e-9);
+              EXPECT_NEAR(fk.roll_rad, 0.0, 1e-9);
+              EXPECT_NEAR(fk.yaw_rad, yaw, 1e-9);
+              EXPECT_NEAR(std::tan(yaw), -std::sin(pitch) * std::tan(q[nao_leg::kAnkleRoll]),
+                          1e-12);
+              ++solved;
+              if (std::abs(yaw) > 1e-3) ++turned;
+            }
+          }
+        }
+      }
+    }
+  }
+  std::printf("[ edges    ] %d pitched targets solved, %d of them turned > 1 mrad\n", solved,
+              turned);
+  EXPECT_GT(solved, 1000);
+  EXPECT_GT(turned, solved / 4);
+}
+
+TEST(NaoLegKinematics, EdgeFootWithoutPitchIsTheFlatFoot) {
+  NaoEdgeFoot edge;
+  edge.edge_m = {0.13, 0.06, -0.28};
+  edge.edge_x_m = 0.10;
+  NaoFootPose flat;
+  flat.position_m = {0.03, 0.06, -0.28};
+  double yaw = 1.0;
+  const NaoLegAngles a = nao_leg_inverse_edge(LegSide::kLeft, edge, {}, &yaw);
+  const NaoLegAngles b = nao_leg_inverse(LegSide::kLeft, flat);
+  for (int j = 0; j < 5; ++j) EXPECT_EQ(a[j], b[j]);
+  EXPECT_EQ(yaw, 0.0);
+  // Out of reach: the same messages as the flat inverse.
+  edge.edge_m = {-0.2, 0.05, -0.30};
+  edge.pitch_rad = 0.5;
+  try {
+    nao_leg_inverse_edge(LegSide::kLeft, edge);
+    ADD_FAILURE() << "reached";
+  } catch (const NaoLegUnreachable& error) {
+    EXPECT_NE(std::string(error.what()).find("left leg: "), std::string::npos) << error.what();
   }
 }
 

@@ -130,6 +130,8 @@ struct FitConfig {
 };
 
 nlohmann::json overrides_to_json(const FitOverrides& overrides);
+// Every field of a strategy, as the `strategy:` section of a fit config reads it back.
+nlohmann::ordered_json strategy_to_json(const StrategyConfig& strategy);
 FitOverrides overrides_from_json(const nlohmann::json& json);
 
 // Throws InputError naming file, line and field for anything wrong in the fit config, the

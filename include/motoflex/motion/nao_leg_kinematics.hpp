@@ -86,4 +86,27 @@ NaoFootPose nao_leg_forward(LegSide side, const NaoLegAngles& angles_rad,
 NaoLegAngles nao_leg_inverse(LegSide side, const NaoFootPose& target,
                              const NaoLegGeometry& geometry = {});
 
+// A foot pitched about a line across its sole (toe-off, heel strike, a pitched swing foot): the
+// line lies at foot-frame x = edge_x_m from the sole point (toe edge +0.10 m, heel edge −0.05 m,
+// the sole point itself 0), stays horizontal, and its midpoint is at edge_m (torso frame for
+// nao_leg_inverse_edge). The foot is pitched by pitch_rad about it (positive: heel up, toes
+// down, as NaoFootPose::pitch_rad).
+struct NaoEdgeFoot {
+  Eigen::Vector3d edge_m = Eigen::Vector3d::Zero();
+  double edge_x_m = 0.0;
+  double pitch_rad = 0.0;
+};
+
+// Inverse kinematics for a NaoEdgeFoot. A pitched foot with zero yaw would need HipRoll = 0
+// (see nao_leg_inverse); here the yaw is left free instead and solved for, so the leg may lean
+// sideways: the foot turns by yaw ψ with tan ψ = −sin(pitch)·tan(AnkleRoll) about the vertical
+// (up to 0.14 rad on the ground in the 0.2 m steps of a 200 mm/s walk at 2 s per cycle, whose
+// edge corners then slide by 6 mm), written to *yaw_rad when given. The forward
+// kinematics of the result put the edge midpoint on edge_m with roll 0, pitch pitch_rad and yaw
+// ψ. Pitch 0 is exactly nao_leg_inverse of the flat sole at edge_m − (edge_x_m, 0, 0) (yaw 0).
+// Throws NaoLegUnreachable like nao_leg_inverse (leg length, URDF limits), or if no yaw solves
+// the chain.
+NaoLegAngles nao_leg_inverse_edge(LegSide side, const NaoEdgeFoot& target,
+                                  const NaoLegGeometry& geometry = {}, double* yaw_rad = nullptr);
+
 }  // namespace motoflex

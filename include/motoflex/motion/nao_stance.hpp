@@ -42,9 +42,21 @@ class NaoStance {
   Solution solve(const Eigen::Vector3d& com_W_m, const NaoFootPose& left_sole_W,
                  const NaoFootPose& right_sole_W, const Solution* hint = nullptr) const;
 
+  // The same for feet that may be pitched about an edge (toe-off, swing with the toes down;
+  // nao_leg_inverse_edge), world frame; the feet's resulting yaws go to the solution.
+  struct EdgeSolution : Solution {
+    double left_yaw_rad = 0.0;
+    double right_yaw_rad = 0.0;
+  };
+  EdgeSolution solve(const Eigen::Vector3d& com_W_m, const NaoEdgeFoot& left_W,
+                     const NaoEdgeFoot& right_W, const Solution* hint = nullptr) const;
+
   // Leg angles for an upright torso at torso_W_m (no CoM condition).
   Legs legs_for_torso(const Eigen::Vector3d& torso_W_m, const NaoFootPose& left_sole_W,
                       const NaoFootPose& right_sole_W) const;
+  Legs legs_for_torso(const Eigen::Vector3d& torso_W_m, const NaoEdgeFoot& left_W,
+                      const NaoEdgeFoot& right_W, double* left_yaw_rad = nullptr,
+                      double* right_yaw_rad = nullptr) const;
 
   // The model's actuator vector (model order) with the leg joints set from `legs` and every
   // other actuator at the robot's stand pose.
@@ -52,6 +64,11 @@ class NaoStance {
   void write_actuator_angles(const Legs& legs, double* out) const;
 
  private:
+  // Fixed-point iteration of solve(): `legs_at(torso)` gives the leg angles for a torso position.
+  template <typename LegsAt>
+  Solution solve_with(const Eigen::Vector3d& com_W_m, const Solution* hint,
+                      const LegsAt& legs_at) const;
+
   const RobotModel* model_;
   NaoLegGeometry geometry_;
   std::array<std::size_t, 5> left_index_{};
