@@ -2,6 +2,7 @@
 //                         [--max-seconds T] [--out DIR] [--data DIR] [--validation DIR]
 // motoflex resume <run-dir> [--threads N] [--max-generations G] [--max-evaluations E]
 //                           [--max-seconds T]
+// Under mpirun/srun with several processes both run distributed (see fit_on_ranks.hpp).
 
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "fit_on_ranks.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/fit_runner.hpp"
@@ -47,11 +49,10 @@ int run_fit_command(const FitArgs& args) {
   if (!args.out.empty()) overrides.out = args.out;
   if (!args.data.empty()) overrides.data = args.data;
   if (!args.validation.empty()) overrides.validation = args.validation;
-  const FitConfig config = load_fit_config(args.target, overrides);
-  return run_fit(config, false);
+  return run_fit_on_ranks([&] { return load_fit_config(args.target, overrides); }, false);
 }
 
-int run_resume_command(const FitArgs& args) {
+FitConfig load_resumed_config(const FitArgs& args) {
   const std::filesystem::path run_json = std::filesystem::path(args.target) / "run.json";
   std::ifstream in(run_json);
   if (!in) throw InputError(run_json.string(), 0, "", "not a fit run folder (no run.json)");
@@ -67,8 +68,11 @@ int run_resume_command(const FitArgs& args) {
   FitOverrides overrides = overrides_from_json(run.value("overrides", nlohmann::json::object()));
   apply_budget(args, overrides);  // threads and budget may change on resume
   overrides.out = std::filesystem::absolute(args.target).lexically_normal().string();
-  const FitConfig config = load_fit_config(run["fit"].get<std::string>(), overrides);
-  return run_fit(config, true);
+  return load_fit_config(run["fit"].get<std::string>(), overrides);
+}
+
+int run_resume_command(const FitArgs& args) {
+  return run_fit_on_ranks([&] { return load_resumed_config(args); }, true);
 }
 
 }  // namespace

@@ -48,6 +48,17 @@ void FitProblem::set_counters(std::uint64_t stopped, std::uint64_t simulated, st
   frames_saved_ = saved;
 }
 
+std::vector<std::uint64_t> FitProblem::counters() const {
+  return {stopped_early_, frames_simulated_, frames_saved_};
+}
+
+void FitProblem::add_counters(const std::vector<std::uint64_t>& increments) {
+  if (increments.size() != 3) throw std::invalid_argument("FitProblem: 3 counters expected");
+  stopped_early_ += increments[0];
+  frames_simulated_ += increments[1];
+  frames_saved_ += increments[2];
+}
+
 void FitProblem::evaluate_batch(const std::vector<std::vector<double>>& xs,
                                 std::vector<double>& fitness,
                                 const motoflex_es::EvaluationContext& context) {
@@ -102,6 +113,13 @@ std::unique_ptr<motoflex_es::Strategy> make_strategy(const FitConfig& config) {
   options.start_point = config.space->start();
   options.population = s.population;
   options.seed = config.seed;
+  // NLopt's global algorithms only stop at their own evaluation limit: the fit's budget.
+  options.max_evaluations = config.budget.max_evaluations;
+  if (!motoflex_es::is_local(options.algorithm) && options.max_evaluations == 0) {
+    throw InputError(config.path, 0, "budget.evaluations",
+                     "required for the global NLopt algorithm " + s.algorithm +
+                         " (NLopt would run indefinitely)");
+  }
   check_options(options.is_valid(&why), why, config.path);
   return std::make_unique<motoflex_es::NloptOptimizer>(bounds, options);
 }

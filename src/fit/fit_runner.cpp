@@ -88,7 +88,8 @@ std::string now_iso8601() {
 }
 
 void write_outputs(const FitConfig& config, const motoflex_es::Strategy& strategy,
-                   const FitProblem& problem, const std::string& stop_reason, double seconds) {
+                   const FitProblem& problem, const std::string& stop_reason, double seconds,
+                   const std::string& evaluator) {
   const fs::path dir = config.out_dir;
   const std::vector<double>& x = strategy.best_x();
   if (x.empty()) return;
@@ -116,6 +117,7 @@ void write_outputs(const FitConfig& config, const motoflex_es::Strategy& strateg
   summary["stop_reason"] = stop_reason;
   summary["seconds"] = seconds;
   summary["strategy"] = strategy.name();
+  summary["evaluator"] = evaluator;  // e.g. "openmp(2 threads)", "mpi(2 ranks x 1 thread)"
   summary["rms_deg"] = rms_json(*config.train, train);
   summary["robots"] = cases_json(*config.train, train);
   summary["free"] = free;
@@ -301,7 +303,7 @@ int run_fit(const FitConfig& config, bool resume, motoflex_es::Evaluator* evalua
     void load_state(const nlohmann::json&) override {}
     std::string main_name;
   } view(*strategy, best_x, best_fitness, polish_evaluations);
-  write_outputs(config, view, problem, stop_reason, seconds_now());
+  write_outputs(config, view, problem, stop_reason, seconds_now(), evaluator->name());
   if (g_stop_signal != 0) {
     std::printf("interrupted: checkpoint written; continue with `motoflex resume %s`\n",
                 dir.c_str());

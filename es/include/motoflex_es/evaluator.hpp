@@ -8,7 +8,7 @@
 namespace motoflex_es {
 
 // Evaluates a batch of points through a Problem; the seam between a strategy and where the
-// work runs (this process serially, OpenMP threads, later MPI ranks). Every evaluator stores
+// work runs (this process serially, OpenMP threads, MPI ranks). Every evaluator stores
 // fitness[k] for xs[k] by index, never in completion order, and hands the problem the
 // individual's index in the context, so a deterministic problem gives bit-identical results
 // under every evaluator and any number of workers.
@@ -52,8 +52,7 @@ class OpenMpEvaluator final : public Evaluator {
   int threads_;
 };
 
-// An MPI evaluator would implement Evaluator the same way: rank 0 scatters (index, x) pairs to
-// workers that each own a replica of the Problem and evaluate one-individual batches with
-// first_individual = index, and gathers (index, fitness) back into fitness[index].
+// MpiEvaluator (mpi_evaluator.hpp) spreads a batch over MPI ranks the same way: fixed
+// contiguous slices, each rank with its own replica of the Problem, fitness gathered by index.
 
 }  // namespace motoflex_es

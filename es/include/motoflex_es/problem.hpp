@@ -69,6 +69,15 @@ class Problem {
   // may parallelise internally.
   virtual void evaluate_batch(const std::vector<std::vector<double>>& xs,
                               std::vector<double>& fitness, const EvaluationContext& context) = 0;
+
+  // Optional statistics of the evaluations so far: counts that only grow (rollouts stopped
+  // early, frames simulated, ...), for reports; they never feed back into the fitness. The
+  // MpiEvaluator adds what every worker's replica counted during a batch to the replica on
+  // rank 0 through add_counters, so the totals read there equal those of a run in one process.
+  // Every replica must return the same number of counters. Default: none.
+  virtual std::vector<std::uint64_t> counters() const { return {}; }
+  // Adds increments[i] to counter i (increments has counters().size() entries).
+  virtual void add_counters(const std::vector<std::uint64_t>& increments) { (void)increments; }
 };
 
 }  // namespace motoflex_es

@@ -24,6 +24,9 @@ class FitProblem final : public motoflex_es::Problem {
   std::uint64_t frames_simulated() const { return frames_simulated_; }
   std::uint64_t frames_saved() const { return frames_saved_; }
   void set_counters(std::uint64_t stopped, std::uint64_t simulated, std::uint64_t saved);
+  // {stopped_early, frames_simulated, frames_saved}, summed over MPI ranks by the MpiEvaluator.
+  std::vector<std::uint64_t> counters() const override;
+  void add_counters(const std::vector<std::uint64_t>& increments) override;
 
  private:
   const FitConfig& config_;

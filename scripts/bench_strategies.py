@@ -1,0 +1,455 @@
+#!/usr/bin/env python3
+"""Strategy benchmark on the five-robot Nao fit (issue 4's closing report).
+
+Runs `motoflex fit` on scenarios/fit/nao_strategy_bench.yaml (nao_quick's training set, free
+parameters and start point) with six strategies and several seeds, and reports per strategy the
+evaluations and wall time until the best fitness first reached a fixed target (median over the
+seeds), the final best, and what early termination saved; then the parallel efficiency of 2
+OpenMP threads and of 2 MPI ranks against 1 thread on one fixed workload (same seed, and the
+three runs must give bit-identical results).
+
+    scripts/bench_strategies.py                  # default: <= 40 min on 2 cores
+    scripts/bench_strategies.py --quick          # ~5 min smoke version (1 seed, tiny budget)
+    scripts/bench_strategies.py --binary build-mpi/motoflex --out runs/bench_strategies
+
+How runs are scheduled: every strategy run uses one thread and `--jobs` (default 2) runs go at
+once, so each run gets one core whatever its strategy (NLopt's algorithms evaluate one point at
+a time and could not use a second thread anyway); wall times are per run on one core. A run is
+killed as soon as its best fitness has reached the target and that generation's checkpoint is
+written (its counts are read from the checkpoint), or it ends at the evaluation budget, which is
+the same for every strategy. The parallel-efficiency runs go one at a time.
+
+Writes into --out: report.md (the tables), results.json (every run), configs/ (the derived fit
+configs) and runs/ (each run's folder).
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import yaml
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def strategies(args):
+    """(key, label, strategy node) per strategy, in report order."""
+    polish = max(1, round(args.budget * args.polish_fraction))
+    paper_mu, paper_lambda = args.paper_mu, args.paper_lambda
+    paper_label = f"({paper_mu}+{paper_lambda})-ES, κ=3"
+    if (paper_mu, paper_lambda) != (10, 800):
+        paper_label += f" (the paper's (10+800) with λ reduced, μ/λ = 1/{paper_lambda // paper_mu})"
+    return [
+        ("es_paper", paper_label,
+         {"kind": "mu_plus_lambda", "mu": paper_mu, "lambda": paper_lambda, "kappa": 3,
+          "rho": min(2, paper_mu), "initial_step": 0.15}),
+        ("es_small", "(4+16)-ES, κ=3, ρ=2 (nao_quick's)",
+         {"kind": "mu_plus_lambda", "mu": 4, "lambda": 16, "kappa": 3, "rho": 2,
+          "initial_step": 0.15}),
+        ("cma_es", "IPOP-aCMA-ES (λ=8)", {"kind": "cma_es", "sigma": 0.25}),
+        ("cma_es_bobyqa", f"IPOP-aCMA-ES + BOBYQA polish ({polish} of the budget)",
+         {"kind": "cma_es", "sigma": 0.25, "polish": "bobyqa", "polish_evaluations": polish}),
+        ("crs2_lm", "NLopt CRS2_LM", {"kind": "nlopt", "algorithm": "crs2_lm"}),
+        ("isres", "NLopt ISRES", {"kind": "nlopt", "algorithm": "isres"}),
+    ]
+
+
+def derived_config(base_path, strategy, evaluations, threads, seed):
+    """The bench fit config with absolute paths and the given strategy and budget."""
+    base = yaml.safe_load(base_path.read_text())
+    folder = base_path.parent
+    config = dict(base)
+    config["scenario"] = str((folder / base["scenario"]).resolve())
+    config["data"] = str((folder / base["data"]).resolve())
+    config.pop("validation", None)
+    config.pop("out", None)
+    main_budget = evaluations - strategy.get("polish_evaluations", 0)
+    config["strategy"] = strategy
+    config["budget"] = {"evaluations": main_budget}
+    config["threads"] = threads
+    config["seed"] = seed
+    return config
+
+
+def write_config(path, config):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(yaml.safe_dump(config, sort_keys=False, default_flow_style=None))
+
+
+def read_generations(run_dir):
+    path = run_dir / "generations.csv"
+    if not path.exists():
+        return []
+    with path.open() as f:
+        return [{"generation": int(r["generation"]), "evaluations": int(r["evaluations"]),
+                 "best": float(r["best"]), "seconds": float(r["seconds"])}
+                for r in csv.DictReader(f)]
+
+
+def first_reach(rows, target):
+    for row in rows:
+        if row["best"] <= target:
+            return row
+    return None
+
+
+def mpirun_prefix(ranks):
+    return ["mpirun", "--oversubscribe", "--bind-to", "none", "-np", str(ranks)]
+
+
+def mpi_environment():
+    env = dict(os.environ)
+    # OpenMPI refuses root without these; containers forbid its single-copy (CMA) mechanism.
+    env.update({"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
+                "OMPI_MCA_btl_vader_single_copy_mechanism": "none"})
+    return env
+
+
+def read_checkpoint(run_dir):
+    """(generation, extra counters) of the run's last checkpoint, or (-1, {})."""
+    try:
+        payload = json.loads((run_dir / "checkpoint.json").read_text())["payload"]
+        return payload["strategy"]["common"]["generation"], payload["extra"]
+    except (OSError, ValueError, KeyError):
+        return -1, {}
+
+
+class Run:
+    """One `motoflex fit` process. Once its best reaches `target` and the checkpoint of that
+    generation is written, it is killed (SIGKILL: a SIGTERM would let it finish the generation
+    under way, up to λ more rollouts), and the early-termination counts are read from that
+    checkpoint instead of summary.json."""
+
+    def __init__(self, name, command, run_dir, target, env=None):
+        self.name, self.run_dir, self.target = name, run_dir, target
+        if run_dir.exists():
+            shutil.rmtree(run_dir)
+        run_dir.parent.mkdir(parents=True, exist_ok=True)
+        self.log = open(run_dir.parent / (run_dir.name + ".log"), "w")
+        self.start = time.monotonic()
+        self.process = subprocess.Popen(command, stdout=self.log, stderr=subprocess.STDOUT,
+                                        env=env)
+        self.reach = None  # the generations.csv row where the best first reached the target
+        self.killed_at_target = None  # the checkpoint's extra counters when it was killed
+        self.wall_s = None
+
+    def poll(self):
+        """True once finished."""
+        if self.process.poll() is not None:
+            if self.wall_s is None:
+                self.wall_s = time.monotonic() - self.start
+                self.log.close()
+            return True
+        if self.target is None or self.killed_at_target is not None:
+            return False
+        if self.reach is None:
+            self.reach = first_reach(read_generations(self.run_dir), self.target)
+        if self.reach is not None:
+            generation, extra = read_checkpoint(self.run_dir)
+            if generation >= self.reach["generation"]:
+                self.process.kill()
+                self.killed_at_target = extra
+        return False
+
+    def succeeded(self):
+        if self.killed_at_target is not None:
+            return True
+        return self.process.returncode == 0 and (self.run_dir / "summary.json").exists()
+
+
+def run_pool(runs_to_start, jobs):
+    """Starts callables returning Run, `jobs` at a time; returns the finished Runs in order."""
+    pending, active, done = list(runs_to_start), [], []
+    while pending or active:
+        while pending and len(active) < jobs:
+            run = pending.pop(0)()
+            print(f"  started {run.name}", flush=True)
+            active.append(run)
+        time.sleep(0.5)
+        for run in list(active):
+            if run.poll():
+                active.remove(run)
+                done.append(run)
+                code = run.process.returncode
+                how = "reached the target" if run.killed_at_target is not None else f"exit {code}"
+                print(f"  finished {run.name} ({run.wall_s:.0f} s, {how})", flush=True)
+                if not run.succeeded():
+                    print(f"  {run.name} FAILED, see {run.log.name}", flush=True)
+    return done
+
+
+def run_result(run, strategy_key, seed, budget, target, polish):
+    if not run.succeeded():
+        return {"strategy": strategy_key, "seed": seed, "budget": budget, "failed": True,
+                "log": run.log.name}
+    rows = read_generations(run.run_dir)
+    reach = first_reach(rows, target)
+    if run.killed_at_target is not None:
+        rows = [r for r in rows if r["generation"] <= reach["generation"]]
+        early = run.killed_at_target
+        summary = {"evaluations": reach["evaluations"], "best_fitness": reach["best"],
+                   "stop_reason": "reached the target (killed)"}
+    else:
+        summary = json.loads((run.run_dir / "summary.json").read_text())
+        early = dict(summary.get("early_termination", {}))
+        early["stopped_early"] = early.get("individuals_stopped_early", 0)
+    simulated = early.get("frames_simulated", 0)
+    saved = early.get("frames_saved", 0)
+    result = {
+        "strategy": strategy_key, "seed": seed, "budget": budget,
+        "evaluations": summary["evaluations"], "best_fitness": summary["best_fitness"],
+        "stop_reason": summary["stop_reason"], "loop_seconds": rows[-1]["seconds"] if rows else 0,
+        "process_seconds": run.wall_s, "reached": reach is not None,
+        "evaluations_to_target": reach["evaluations"] if reach else None,
+        "seconds_to_target": reach["seconds"] if reach else None,
+        "to_target_is_upper_bound": False,
+        "individuals_stopped_early": early.get("stopped_early", 0),
+        "frames_simulated": simulated, "frames_saved": saved,
+        "simulation_saved_fraction": saved / (simulated + saved) if simulated + saved else 0.0,
+    }
+    if reach is None and polish and summary["best_fitness"] <= target:
+        # The polish writes no per-evaluation rows: all we know is that it got there by the end.
+        result.update(reached=True, evaluations_to_target=summary["evaluations"],
+                      seconds_to_target=summary["seconds"], to_target_is_upper_bound=True)
+    return result
+
+
+def run_strategies(args, out, bench_config):
+    runs = []
+    table = strategies(args)
+    for key, label, node in table:
+        config_path = out / "configs" / f"{key}.yaml"
+        write_config(config_path, derived_config(bench_config, node, args.budget, 1, args.seeds[0]))
+        for seed in args.seeds:
+            run_dir = out / "runs" / f"{key}_seed{seed}"
+            command = [str(args.binary), "fit", str(config_path), "--out", str(run_dir),
+                       "--seed", str(seed), "--threads", "1"]
+            runs.append((key, seed, lambda c=command, d=run_dir, n=f"{key} seed {seed}":
+                         Run(n, c, d, args.target)))
+    finished = run_pool([make for _, _, make in runs], args.jobs)
+    by_name = {run.name: run for run in finished}
+    results = []
+    for key, seed, _ in runs:
+        node = next(n for k, _, n in table if k == key)
+        results.append(run_result(by_name[f"{key} seed {seed}"], key, seed, args.budget,
+                                  args.target, "polish" in node))
+    return table, results
+
+
+def run_parallel(args, out, bench_config):
+    """1 thread, 2 threads, 2 MPI ranks x 1 thread on the same fixed workload."""
+    node = {"kind": "mu_plus_lambda", "mu": 4, "lambda": 16, "kappa": 3, "rho": 2,
+            "initial_step": 0.15}
+    config = derived_config(bench_config, node, 100000, 1, args.seeds[0])
+    config["budget"] = {"generations": args.parallel_generations}
+    config_path = out / "configs" / "parallel.yaml"
+    write_config(config_path, config)
+    setups = [("1 thread", [], 1), ("2 threads", [], 2)]
+    if shutil.which("mpirun"):
+        setups.append(("2 MPI ranks x 1 thread", mpirun_prefix(2), 1))
+    results = []
+    for label, prefix, threads in setups:
+        run_dir = out / "runs" / ("parallel_" + label.replace(" ", "_"))
+        command = prefix + [str(args.binary), "fit", str(config_path), "--out", str(run_dir),
+                            "--threads", str(threads)]
+        env = mpi_environment() if prefix else None
+        load = os.getloadavg()[0]
+        done = run_pool([lambda c=command, d=run_dir, e=env: Run(label, c, d, None, e)], 1)[0]
+        rows = read_generations(run_dir)
+        summary = json.loads((run_dir / "summary.json").read_text())
+        results.append({"setup": label, "load_average_before": load,
+                        "loop_seconds": rows[-1]["seconds"],
+                        "process_seconds": done.wall_s, "evaluations": summary["evaluations"],
+                        "evaluator": summary.get("evaluator", ""),
+                        "best_fitness": summary["best_fitness"],
+                        "fingerprint": fingerprint(run_dir)})
+    base = results[0]
+    for r in results:
+        r["speedup"] = base["loop_seconds"] / r["loop_seconds"]
+        workers = 1 if r is base else 2
+        r["efficiency"] = r["speedup"] / workers
+        r["identical_to_1_thread"] = r["fingerprint"] == base["fingerprint"]
+    return results
+
+
+def fingerprint(run_dir):
+    """generations.csv without seconds, and best.json without its date."""
+    lines = [line.rsplit(",", 1)[0] for line in
+             (run_dir / "generations.csv").read_text().splitlines()]
+    best = json.loads((run_dir / "best.json").read_text())
+    best["provenance"].pop("date", None)
+    return "\n".join(lines) + json.dumps(best, sort_keys=True)
+
+
+def median_or_none(values):
+    values = [v for v in values if v is not None]
+    return statistics.median(values) if values else None
+
+
+def fmt(value, digits=3):
+    if value is None:
+        return "–"
+    if isinstance(value, float):
+        return f"{value:.{digits}g}"
+    return str(value)
+
+
+def summarise(table, results, args):
+    rows = []
+    for key, label, _ in table:
+        mine = [r for r in results if r["strategy"] == key and not r.get("failed")]
+        if not mine:
+            rows.append({"strategy": key, "label": label, "seeds": 0, "failed": True})
+            continue
+        reached = [r for r in mine if r["reached"]]
+        # Median over all seeds, a seed that missed the target counting as worse than any that
+        # reached it (so the median is only a number when most seeds reached it).
+        n = len(mine)
+        ranked = sorted(reached, key=lambda r: r["evaluations_to_target"])
+        median_evals = median_secs = None
+        if 2 * len(reached) > n:
+            lower = (n - 1) // 2
+            upper = n // 2
+            evals = [r["evaluations_to_target"] for r in ranked] + [math.inf] * (n - len(ranked))
+            secs = sorted([r["seconds_to_target"] for r in reached]) + [math.inf] * (n - len(reached))
+            median_evals = (evals[lower] + evals[upper]) / 2
+            median_secs = (secs[lower] + secs[upper]) / 2
+        rows.append({
+            "strategy": key, "label": label, "seeds": n, "reached": len(reached),
+            "median_evaluations_to_target": median_evals,
+            "median_seconds_to_target": median_secs,
+            "upper_bound": any(r["to_target_is_upper_bound"] for r in reached),
+            "evaluations_to_target": [r["evaluations_to_target"] for r in mine],
+            "median_final_best": statistics.median(r["best_fitness"] for r in mine),
+            "median_evaluations_run": statistics.median(r["evaluations"] for r in mine),
+            "individuals_stopped_early": sum(r["individuals_stopped_early"] for r in mine),
+            "evaluations_total": sum(r["evaluations"] for r in mine),
+            "simulation_saved_fraction": (
+                sum(r["frames_saved"] for r in mine) /
+                max(1, sum(r["frames_saved"] + r["frames_simulated"] for r in mine))),
+        })
+    return rows
+
+
+def markdown(args, summary_rows, parallel, started, finished, load):
+    lines = [
+        "# Strategy benchmark: five-robot Nao fit",
+        "",
+        f"`{' '.join(sys.argv)}` — {time.strftime('%Y-%m-%d %H:%M', time.localtime(started))}, "
+        f"{os.cpu_count()} cores, load average {load[0]:.1f} at the start and {load[1]:.1f} at "
+        f"the end, {finished - started:.0f} s in all.",
+        "",
+        f"Fit: `{args.config}` (4 free parameters, nominal start). Target fitness "
+        f"{args.target:g}; budget {args.budget} evaluations per run; seeds "
+        f"{', '.join(map(str, args.seeds))}; each run on one core ({args.jobs} runs at once), "
+        "stopped when its best reached the target.",
+        "",
+        "| strategy | reached | evaluations to target (median) | per seed | wall s to target "
+        "(median, 1 core) | final best (median) | stopped early | simulation saved |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for r in summary_rows:
+        if r.get("failed"):
+            lines.append(f"| {r['label']} | every run failed (see results.json) |||||||")
+            continue
+        bound = "≤ " if r["upper_bound"] else ""
+        per_seed = ", ".join("–" if e is None else str(e) for e in r["evaluations_to_target"])
+        evals = r["median_evaluations_to_target"]
+        secs = r["median_seconds_to_target"]
+        lines.append(
+            f"| {r['label']} | {r['reached']}/{r['seeds']} | "
+            f"{bound + fmt(evals) if evals is not None else '> ' + str(args.budget)} | "
+            f"{per_seed} | {bound + fmt(secs) if secs is not None else '–'} | "
+            f"{fmt(r['median_final_best'])} | {r['individuals_stopped_early']} of "
+            f"{r['evaluations_total']} | {100 * r['simulation_saved_fraction']:.0f} % |")
+    lines += [
+        "",
+        "*stopped early*: individuals whose rollout stopped once it could no longer beat the "
+        "selection threshold (summary.json `early_termination`), of all evaluations; *simulation "
+        "saved*: the simulated frames this spared, as a share of all frames the runs asked for "
+        "(CMA-ES and NLopt offer no threshold, so they save nothing). `≤`: the target was reached "
+        "during the BOBYQA polish, which writes no per-evaluation rows, so the count is the run's "
+        "total.",
+    ]
+    if parallel:
+        lines += [
+            "",
+            f"## Parallel efficiency ({parallel[0]['evaluations']} evaluations: (4+16)-ES, "
+            f"{args.parallel_generations} generation(s), seed {args.seeds[0]}, one run at a time)",
+            "",
+            "| setup | fit loop s | speed-up | efficiency | bit-identical to 1 thread | "
+            "load average before |",
+            "|---|---|---|---|---|---|",
+        ]
+        for r in parallel:
+            lines.append(f"| {r['setup']} | {r['loop_seconds']:.1f} | {r['speedup']:.2f} | "
+                         f"{100 * r['efficiency']:.0f} % | "
+                         f"{'yes' if r['identical_to_1_thread'] else 'NO'} | "
+                         f"{r['load_average_before']:.1f} |")
+        lines += ["", "Fit loop s: the `seconds` of the last generations.csv row (start-up, final "
+                  "report and plots excluded). Efficiency = speed-up / 2 workers."]
+    return "\n".join(lines) + "\n"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--binary", default=str(ROOT / "build" / "motoflex"))
+    parser.add_argument("--config", default=str(ROOT / "scenarios/fit/nao_strategy_bench.yaml"))
+    parser.add_argument("--out", default=str(ROOT / "runs" / "bench_strategies"))
+    parser.add_argument("--quick", action="store_true", help="~5 minute smoke version")
+    parser.add_argument("--seeds", type=int, nargs="+", help="default 1 2 3 (quick: 1)")
+    parser.add_argument("--budget", type=int, help="evaluations per run (default 81, quick 16)")
+    parser.add_argument("--target", type=float, default=2.0e-5, help="target fitness")
+    parser.add_argument("--jobs", type=int, default=2, help="strategy runs at once")
+    parser.add_argument("--paper-mu", type=int, default=1)
+    parser.add_argument("--paper-lambda", type=int, default=80)
+    parser.add_argument("--polish-fraction", type=float, default=0.25,
+                        help="share of the budget CMA-ES + BOBYQA leaves to the polish")
+    parser.add_argument("--parallel-generations", type=int,
+                        help="generations of the efficiency workload (default 2, quick 1)")
+    parser.add_argument("--skip-strategies", action="store_true")
+    parser.add_argument("--skip-parallel", action="store_true")
+    args = parser.parse_args()
+    args.seeds = args.seeds or ([1] if args.quick else [1, 2, 3])
+    args.budget = args.budget or (16 if args.quick else 81)
+    args.parallel_generations = args.parallel_generations or (1 if args.quick else 2)
+    args.binary = Path(args.binary).resolve()
+    if not args.binary.exists():
+        sys.exit(f"bench_strategies: no binary at {args.binary} (build first, or --binary)")
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    bench_config = Path(args.config).resolve()
+
+    started = time.time()
+    load_start = os.getloadavg()[0]
+    table, results, parallel = strategies(args), [], []
+    if not args.skip_strategies:
+        print(f"strategies: {len(table)} x seeds {args.seeds}, budget {args.budget}, "
+              f"target {args.target:g}", flush=True)
+        table, results = run_strategies(args, out, bench_config)
+    if not args.skip_parallel:
+        print(f"parallel efficiency: {args.parallel_generations} generations", flush=True)
+        parallel = run_parallel(args, out, bench_config)
+    finished = time.time()
+    summary_rows = summarise(table, results, args) if results else []
+    report = markdown(args, summary_rows, parallel, started, finished,
+                      (load_start, os.getloadavg()[0]))
+    (out / "report.md").write_text(report)
+    (out / "results.json").write_text(json.dumps(
+        {"target": args.target, "budget": args.budget, "seeds": args.seeds,
+         "summary": summary_rows, "runs": results,
+         "parallel": [{k: v for k, v in r.items() if k != "fingerprint"} for r in parallel],
+         "seconds": finished - started}, indent=2) + "\n")
+    print(report)
+
+
+if __name__ == "__main__":
+    main()
