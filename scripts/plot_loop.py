@@ -24,6 +24,7 @@ DEG = 180.0 / math.pi
 def main(directory):
     before, joints = read_series(os.path.join(directory, "before_series.csv"))
     after, _ = read_series(os.path.join(directory, "after_series.csv"))
+    joints = [j for j in joints if j + ".residual_rad" in after]
     rows = len(joints)
     fig, axes = plt.subplots(rows, 1, figsize=(10, 2.4 * rows), squeeze=False)
     for ax, joint in zip(axes[:, 0], joints):

@@ -29,8 +29,9 @@ def read_series(path):
         for row in reader:
             for name, value in zip(header, row):
                 columns[name].append(float(value))
-    joints = [h[: -len(".residual_rad")] for h in header if h.endswith(".residual_rad")]
-    return columns, joints
+    # Every residual channel: the joints, then imu.roll and imu.pitch when the fit scores them.
+    channels = [h[: -len(".residual_rad")] for h in header if h.endswith(".residual_rad")]
+    return columns, channels
 
 
 def grid(n):
@@ -72,6 +73,7 @@ def main(directory):
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "residual_time.png"), dpi=90)
     plt.close(fig)
+    joints = [j for j in joints if j + ".command_velocity_rad_s" in columns]  # not the IMU
     scatter_plot(columns, joints, ".command_velocity_rad_s", "commanded velocity (rad/s)",
                  os.path.join(directory, "residual_vs_velocity.png"))
     scatter_plot(columns, joints, ".load_torque_nm", "actuator torque (N·m)",

@@ -20,30 +20,23 @@ nlohmann::json CmaEs::options_fingerprint() const {
 }
 
 nlohmann::json CmaEs::save_state() const {
-  return {
-      {"strategy", name()},
-      {"dimension", dimension()},
-      {"options", options_fingerprint()},
-      {"common", save_common()},
-      // Every draw comes from a stream keyed by (seed, generation, individual, purpose) and
-      // starts at counter 0, so seed and generation are the whole random state.
-      {"rng", {{"seed", options_.seed}, {"generation", generation_}}},
-      {"restarts", restarts_},
-      {"lambda", parameters_.lambda},
-      {"run_generation", run_generation_},
-      {"eigen_generation", eigen_generation_},
-      {"mean", detail::eigen_vector_to_json(mean_)},
-      {"sigma", detail::double_to_json(sigma_)},
-      {"covariance", detail::matrix_to_json(covariance_)},
-      {"eigenvectors", detail::matrix_to_json(eigenvectors_)},
-      {"axis_lengths", detail::eigen_vector_to_json(axis_lengths_)},
-      {"inverse_sqrt_c", detail::matrix_to_json(inverse_sqrt_c_)},
-      {"path_c", detail::eigen_vector_to_json(path_c_)},
-      {"path_sigma", detail::eigen_vector_to_json(path_sigma_)},
-      {"best_history", detail::vector_to_json(best_history_)},
-      {"median_history", detail::vector_to_json(median_history_)},
-      {"run_log", run_log_},
-  };
+  nlohmann::json state = save_header(options_fingerprint(), options_.seed);
+  state["restarts"] = restarts_;
+  state["lambda"] = parameters_.lambda;
+  state["run_generation"] = run_generation_;
+  state["eigen_generation"] = eigen_generation_;
+  state["mean"] = detail::eigen_vector_to_json(mean_);
+  state["sigma"] = detail::double_to_json(sigma_);
+  state["covariance"] = detail::matrix_to_json(covariance_);
+  state["eigenvectors"] = detail::matrix_to_json(eigenvectors_);
+  state["axis_lengths"] = detail::eigen_vector_to_json(axis_lengths_);
+  state["inverse_sqrt_c"] = detail::matrix_to_json(inverse_sqrt_c_);
+  state["path_c"] = detail::eigen_vector_to_json(path_c_);
+  state["path_sigma"] = detail::eigen_vector_to_json(path_sigma_);
+  state["best_history"] = detail::vector_to_json(best_history_);
+  state["median_history"] = detail::vector_to_json(median_history_);
+  state["run_log"] = run_log_;
+  return state;
 }
 
 void CmaEs::load_state(const nlohmann::json& state) {

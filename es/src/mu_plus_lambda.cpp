@@ -286,17 +286,10 @@ nlohmann::json MuPlusLambda::save_state() const {
         {"age", individual.age},
     });
   }
-  return {
-      {"strategy", name()},
-      {"dimension", dimension()},
-      {"options", options_fingerprint()},
-      {"common", save_common()},
-      // Every draw comes from a stream keyed by (seed, generation, individual, purpose) and
-      // starts at counter 0, so seed and generation are the whole random state.
-      {"rng", {{"seed", options_.seed}, {"generation", generation_}}},
-      {"last_improvement_generation", last_improvement_generation_},
-      {"population", population},
-  };
+  nlohmann::json state = save_header(options_fingerprint(), options_.seed);
+  state["last_improvement_generation"] = last_improvement_generation_;
+  state["population"] = population;
+  return state;
 }
 
 void MuPlusLambda::load_state(const nlohmann::json& state) {

@@ -73,6 +73,16 @@ nlohmann::json Strategy::save_common() const {
   };
 }
 
+nlohmann::json Strategy::save_header(nlohmann::json options, std::uint64_t seed) const {
+  return {
+      {"strategy", name()},
+      {"dimension", dimension()},
+      {"options", std::move(options)},
+      {"common", save_common()},
+      {"rng", {{"seed", seed}, {"generation", generation_}}},
+  };
+}
+
 void Strategy::load_common(const nlohmann::json& common) {
   using detail::member;
   generation_ = detail::uint_from_json(member(common, "generation"), "generation");

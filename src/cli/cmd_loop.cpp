@@ -25,7 +25,9 @@ int run_loop_command(const LoopArgs& args) {
   if (args.threads > 0) overrides.threads = args.threads;
   if (args.seed >= 0) overrides.seed = static_cast<std::uint64_t>(args.seed);
   const LoopResult result = run_loop(args.fit, overrides);
-  std::printf("loop done: model %s", result.base_model.empty() ? "-" : "");
+  // The final model's effects, or "the base model's" when the base lists none (and nothing
+  // was added).
+  std::printf("loop done: model %s", result.final_model.empty() ? "as the base fit's" : "");
   for (std::size_t i = 0; i < result.final_model.size(); ++i) {
     std::printf("%s%s", i ? " + " : "", result.final_model[i].c_str());
   }

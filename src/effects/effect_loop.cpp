@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -57,6 +58,36 @@ Evaluated evaluate(FinishedFit fit) {
   return {std::move(fit), std::move(train), std::move(validation)};
 }
 
+// Writes the refit of `current` with `candidate`'s effect into `dir` and returns its config
+// path. The refit starts at the signature regression's linearised optimum, which moves the
+// fit's own parameters too (it helps where the effect and a fit parameter trade off). If that
+// start is worse on the training logs than the current fit already is, the step has left the
+// region where the linearisation holds (a fit parameter the logs barely constrain can take a
+// long, wrong step); then the current fit with only the effect's estimate added is tried too,
+// and the refit starts at the better of the two. `start_rollouts` counts the rollouts this
+// took. A refit dir that already has its fit.yaml (a loop run again) keeps it, so the refit
+// resumes unchanged.
+std::string write_refit(const Evaluated& current, const EffectScore& candidate,
+                        const std::string& dir, std::uint64_t* start_rollouts) {
+  const fs::path yaml = fs::path(dir) / "fit.yaml";
+  if (fs::exists(yaml)) return yaml.string();
+  const Effect& effect = find_effect(candidate.effect);
+  const auto training_fitness = [&](const nlohmann::json& free) {
+    const FitConfig config = load_fit_config(
+        write_refit_config(current.fit.config, free, effect, candidate.estimate, dir));
+    *start_rollouts += config.train->cases().size();
+    return config.train->evaluate(config.space->apply(config.space->start())).fitness;
+  };
+  nlohmann::json linearised = current.fit.best_json["free"];
+  for (const auto& [name, value] : candidate.fit_start) linearised[name] = value;
+  const double linearised_fitness = training_fitness(linearised);
+  const double current_fitness =
+      current.fit.summary.value("best_fitness", std::numeric_limits<double>::infinity());
+  if (linearised_fitness <= current_fitness) return yaml.string();
+  if (training_fitness(current.fit.best_json["free"]) <= linearised_fitness) return yaml.string();
+  return write_refit_config(current.fit.config, linearised, effect, candidate.estimate, dir);
+}
+
 }  // namespace
 
 LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) {
@@ -93,6 +124,7 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) 
     step.train_rms_before_deg = current.train.rms_deg;
     step.val_rms_before_deg = current.validation.rms_deg;
     step.val_mae_before_rad = current.validation.mae_rad;
+    step.val_imu_rms_before_deg = imu_rms_deg(current.validation);
     const auto ranking_start = std::chrono::steady_clock::now();
     step.ranking = rank_effects(current.fit.config, current.fit.best, options.effects,
                                 current.fit.config.threads);
@@ -121,11 +153,7 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) 
     refits.reserve(candidates.size());
     for (const EffectScore* candidate : candidates) {
       const std::string dir = iteration_dir(out, iteration, candidate->effect);
-      // Warm start: the linearised optimum of the signature regression (fit parameters too).
-      nlohmann::json start = current.fit.best_json["free"];
-      for (const auto& [name, value] : candidate->fit_start) start[name] = value;
-      const std::string yaml = write_refit_config(
-          current.fit.config, start, find_effect(candidate->effect), candidate->estimate, dir);
+      const std::string yaml = write_refit(current, *candidate, dir, &result.probe_rollouts);
       std::printf("loop: refit with %s -> %s\n", candidate->effect.c_str(), dir.c_str());
       std::fflush(stdout);
       FitConfig config = load_fit_config(yaml);
@@ -140,13 +168,16 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) 
       row.train_rms_deg = refit.train.rms_deg;
       row.val_rms_deg = refit.validation.rms_deg;
       row.val_mae_rad = refit.validation.mae_rad;
+      row.val_imu_rms_deg = imu_rms_deg(refit.validation);
       row.val_bic = refit.validation.bic;
       row.free_parameters = refit.fit.config.space->dimension();
       row.evaluations = refit.fit.summary.value("evaluations", std::uint64_t{0});
       row.seconds = refit.fit.summary.value("seconds", 0.0);
-      row.significant =
-          refit.validation.rms_deg <= (1.0 - options.min_gain) * current.validation.rms_deg &&
-          refit.validation.bic < current.validation.bic;
+      // The gain is measured as the fit measures its error: on the joints (with their
+      // weights), and on the IMU too when the fitness scores it.
+      row.significant = refit.validation.channel_rms_rad <=
+                            (1.0 - options.min_gain) * current.validation.channel_rms_rad &&
+                        refit.validation.bic < current.validation.bic;
       std::printf("loop:   %s: validation RMS %.4g -> %.4g deg (%s)\n", row.effect.c_str(),
                   current.validation.rms_deg, row.val_rms_deg,
                   row.significant ? "significant" : "not significant");
@@ -161,6 +192,7 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) 
       step.train_rms_after_deg = current.train.rms_deg;
       step.val_rms_after_deg = current.validation.rms_deg;
       step.val_mae_after_rad = current.validation.mae_rad;
+      step.val_imu_rms_after_deg = step.val_imu_rms_before_deg;
       result.iterations.push_back(std::move(step));
       std::printf("loop: no candidate improves the validation error significantly; stop\n");
       break;
@@ -172,6 +204,7 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) 
     step.train_rms_after_deg = best.train.rms_deg;
     step.val_rms_after_deg = best.validation.rms_deg;
     step.val_mae_after_rad = best.validation.mae_rad;
+    step.val_imu_rms_after_deg = imu_rms_deg(best.validation);
     std::printf("loop: added %s\n", step.added_effect.c_str());
     result.iterations.push_back(std::move(step));
     best.fit.config.loop = options;

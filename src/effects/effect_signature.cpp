@@ -17,14 +17,15 @@ namespace {
 
 constexpr double kProbeFraction = 0.05;  // probe step of the fit's own parameters (of the width)
 
-// The residual of the current fit: measured − simulated encoders per case, frame-major, with
-// the frames that count (scored and simulated).
+// The residual of the current fit: measured − simulated channels (the fitness's: the joint
+// encoders, and the IMU when the fit scores it; see FitnessFunction::channels) per case,
+// frame-major, with the frames that count (scored and simulated).
 struct Residual {
   std::vector<std::vector<double>> r_rad;    // per case
-  std::vector<std::vector<double>> sim_rad;  // per case: simulated encoders of the fit
+  std::vector<std::vector<double>> sim_rad;  // per case: simulated channels of the fit
   std::vector<std::size_t> first_frame;      // per case
   std::vector<std::size_t> end_frame;        // per case: frames the fit simulated
-  std::size_t joints = 0;
+  std::size_t channels = 0;
   double rss = 0.0;
   std::size_t samples = 0;
   // A smooth residual carries far fewer independent samples than frames: with lag-1
@@ -32,33 +33,46 @@ struct Residual {
   double effective_samples = 0.0;
 };
 
+// The simulated channels of frames [0, frames_completed) of a rollout, frame-major.
+std::vector<double> simulated_channels(const FitnessFunction& fitness, const RolloutResult& rollout,
+                                       std::size_t frames) {
+  const std::size_t k = fitness.channels();
+  std::vector<double> out(frames * k, 0.0);
+  for (std::size_t f = 0; f < std::min(frames, rollout.frames_completed); ++f) {
+    fitness.simulated_channels(rollout, f, &out[f * k]);
+  }
+  return out;
+}
+
 Residual residual_of(const FitnessFunction& fitness, const ParameterSet& current) {
   std::vector<RolloutResult> rollouts;
   fitness.evaluate(current, std::numeric_limits<double>::infinity(), &rollouts);
   Residual out;
-  out.joints = fitness.model().actuators.size();
+  out.channels = fitness.channels();
+  const std::size_t k = out.channels;
+  std::vector<double> measured(k);
   double lagged = 0.0;
   for (std::size_t c = 0; c < fitness.cases().size(); ++c) {
     const FitCase& fit_case = fitness.cases()[c];
     const RolloutResult& rollout = rollouts[c];
+    const std::size_t frames = fit_case.commands.frames();
     const std::size_t first = first_scored_frame(fit_case, fitness.options().settle_s);
     const std::size_t end = rollout.frames_completed;
-    std::vector<double> r(fit_case.measured_rad.size(), 0.0);
+    std::vector<double> sim = simulated_channels(fitness, rollout, frames);
+    std::vector<double> r(frames * k, 0.0);
     for (std::size_t f = first; f < end; ++f) {
-      for (std::size_t j = 0; j < out.joints; ++j) {
-        const std::size_t k = f * out.joints + j;
-        r[k] = fit_case.measured_rad[k] - rollout.measured_rad[k];
-        out.rss += r[k] * r[k];
+      fitness.measured_channels(c, f, measured.data());
+      for (std::size_t i = 0; i < k; ++i) {
+        r[f * k + i] = measured[i] - sim[f * k + i];
+        out.rss += r[f * k + i] * r[f * k + i];
         ++out.samples;
       }
     }
     for (std::size_t f = first + 1; f < end; ++f) {
-      for (std::size_t j = 0; j < out.joints; ++j) {
-        lagged += r[f * out.joints + j] * r[(f - 1) * out.joints + j];
-      }
+      for (std::size_t i = 0; i < k; ++i) lagged += r[f * k + i] * r[(f - 1) * k + i];
     }
     out.r_rad.push_back(std::move(r));
-    out.sim_rad.push_back(rollout.measured_rad);
+    out.sim_rad.push_back(std::move(sim));
     out.first_frame.push_back(first);
     out.end_frame.push_back(end);
   }
@@ -99,7 +113,8 @@ std::shared_ptr<const FitnessFunction> variant_fitness(const FitConfig& config,
     return nullptr;
   }
   return std::make_shared<const FitnessFunction>(
-      scenario.model, load_fit_cases(scenario, config.train_logs), config.fitness);
+      scenario.model, load_fit_cases(scenario, config.train_logs, config.fitness.imu_weight > 0.0),
+      config.fitness);
 }
 
 ParameterSet transfer(const ParameterSet& from, const ParameterRegistry& to) {
@@ -135,27 +150,29 @@ Direction direction(double current, double lower, double upper, double fraction)
   return d;
 }
 
-// d(simulated encoders) for one probe set: probe − current, per case, frame-major; frames the
+// d(simulated channels) for one probe set: probe − current, per case, frame-major; frames the
 // probe did not reach are 0 (no information).
 std::vector<std::vector<double>> response(const FitnessFunction& fitness, const ParameterSet& set,
                                           const Residual& residual) {
   std::vector<RolloutResult> rollouts;
   fitness.evaluate(set, std::numeric_limits<double>::infinity(), &rollouts);
+  const std::size_t k = residual.channels;
+  std::vector<double> probe(k);
   std::vector<std::vector<double>> out(residual.r_rad.size());
   for (std::size_t c = 0; c < out.size(); ++c) {
     out[c].assign(residual.r_rad[c].size(), 0.0);
     const std::size_t end = std::min(residual.end_frame[c], rollouts[c].frames_completed);
     for (std::size_t f = residual.first_frame[c]; f < end; ++f) {
-      for (std::size_t j = 0; j < residual.joints; ++j) {
-        const std::size_t k = f * residual.joints + j;
-        out[c][k] = rollouts[c].measured_rad[k] - residual.sim_rad[c][k];
+      fitness.simulated_channels(rollouts[c], f, probe.data());
+      for (std::size_t i = 0; i < k; ++i) {
+        out[c][f * k + i] = probe[i] - residual.sim_rad[c][f * k + i];
       }
     }
   }
   return out;
 }
 
-// The sensitivity of the simulated encoders to each free parameter of the current fit (one
+// The sensitivity of the simulated channels to each free parameter of the current fit (one
 // probe each): the directions a refit can already move in.
 struct FitJacobian {
   std::vector<std::vector<std::vector<double>>> columns;  // per free parameter
@@ -184,32 +201,36 @@ FitJacobian fit_jacobian(const FitConfig& config, const ParameterSet& current,
   return out;
 }
 
-// Least squares of the residual on columns (each a per-case field, restricted to `rows` joints);
-// returns the coefficients and the residual sum of squares.
+// Least squares of the residual on columns; returns the coefficients and the residual sum of
+// squares. A column is a per-case field scaled per channel: 1 on the channels it explains, 0 on
+// those it does not, and a share on the IMU channels for one joint's parameter of an effect
+// probed on all joints at once (see score_probe).
 struct Column {
   const std::vector<std::vector<double>>* field;
-  std::vector<std::size_t> joints;  // rows it lives on
+  std::vector<double> scale;  // per channel
 };
+
+Column on_every_channel(const std::vector<std::vector<double>>* field, std::size_t channels) {
+  return {field, std::vector<double>(channels, 1.0)};
+}
 
 Eigen::VectorXd solve(const std::vector<Column>& columns, const Residual& residual, double* rss) {
   const std::size_t k = columns.size();
+  const std::size_t channels = residual.channels;
   Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(k, k);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k);
-  std::vector<std::vector<char>> on(k, std::vector<char>(residual.joints, 0));
-  for (std::size_t a = 0; a < k; ++a) {
-    for (const std::size_t j : columns[a].joints) on[a][j] = 1;
-  }
+  std::vector<double> value(k);
   for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
     for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {
-      for (std::size_t j = 0; j < residual.joints; ++j) {
-        const std::size_t row = f * residual.joints + j;
+      for (std::size_t i = 0; i < channels; ++i) {
+        const std::size_t row = f * channels + i;
         for (std::size_t a = 0; a < k; ++a) {
-          if (!on[a][j]) continue;
-          const double va = (*columns[a].field)[c][row];
-          rhs(a) += va * residual.r_rad[c][row];
-          for (std::size_t b = a; b < k; ++b) {
-            if (on[b][j]) normal(a, b) += va * (*columns[b].field)[c][row];
-          }
+          value[a] = columns[a].scale[i] * (*columns[a].field)[c][row];
+        }
+        for (std::size_t a = 0; a < k; ++a) {
+          if (value[a] == 0.0) continue;
+          rhs(a) += value[a] * residual.r_rad[c][row];
+          for (std::size_t b = a; b < k; ++b) normal(a, b) += value[a] * value[b];
         }
       }
     }
@@ -225,6 +246,26 @@ Eigen::VectorXd solve(const std::vector<Column>& columns, const Residual& residu
   // RSS = r·r − 2βᵀAᵀr + βᵀAᵀAβ
   *rss = residual.rss - (k == 0 ? 0.0 : 2.0 * beta.dot(rhs) - beta.dot(normal * beta));
   return beta;
+}
+
+// Σ (r − Σ_a β_a·column_a)² over the scored frames.
+double rss_of(const std::vector<Column>& columns, const std::vector<double>& beta,
+              const Residual& residual) {
+  double sum = 0.0;
+  const std::size_t channels = residual.channels;
+  for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
+    for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {
+      for (std::size_t i = 0; i < channels; ++i) {
+        const std::size_t row = f * channels + i;
+        double e = residual.r_rad[c][row];
+        for (std::size_t a = 0; a < columns.size(); ++a) {
+          e -= beta[a] * columns[a].scale[i] * (*columns[a].field)[c][row];
+        }
+        sum += e * e;
+      }
+    }
+  }
+  return sum;
 }
 
 EffectScore score_probe(const Probe& probe, const Residual& residual, const ParameterSet& current,
@@ -252,20 +293,42 @@ EffectScore score_probe(const Probe& probe, const Residual& residual, const Para
   const std::vector<std::vector<double>> effect_field = response(*probe.fitness, moved, residual);
 
   // The fit's own directions first, then one coefficient per target of an `each` parameter (on
-  // its joints' rows) or one for the tied targets of a global parameter (all rows).
-  std::vector<std::size_t> all_joints(residual.joints);
-  for (std::size_t j = 0; j < residual.joints; ++j) all_joints[j] = j;
+  // its joints' channels) or one for the tied targets of a global parameter (their joints'
+  // channels and the IMU's).
+  // The probe moved all targets of an `each` parameter at once, so its response on the IMU
+  // channels (which no single joint owns) is shared out equally among their coefficients:
+  // equal coefficients then reproduce the probe exactly.
+  const std::size_t channels = residual.channels;
+  const std::size_t n_joints = model.actuators.size();
   std::vector<Column> columns;
-  for (const auto& field : jacobian.columns) columns.push_back({&field, all_joints});
+  for (const auto& field : jacobian.columns) columns.push_back(on_every_channel(&field, channels));
   const std::size_t base_columns = columns.size();
+  const bool each = effect.parameters[probed].each;
+  std::size_t each_count = 0;
+  for (const auto& target : probe.targets) each_count += target.parameter == probed ? 1 : 0;
   std::vector<std::vector<std::size_t>> coefficient_targets;
   for (std::size_t t = 0; t < probe.targets.size(); ++t) {
     if (probe.targets[t].parameter != probed) continue;
-    if (effect.parameters[probed].each || coefficient_targets.empty()) {
+    if (each) {
       coefficient_targets.push_back({t});
-      columns.push_back({&effect_field, owners(model, probe.targets[t].name)});
+      Column column{&effect_field, std::vector<double>(channels, 0.0)};
+      for (const std::size_t j : owners(model, probe.targets[t].name)) column.scale[j] = 1.0;
+      for (std::size_t i = n_joints; i < channels; ++i) {
+        column.scale[i] = 1.0 / static_cast<double>(each_count);
+      }
+      columns.push_back(std::move(column));
     } else {
+      // One coefficient for the tied targets: on the joints of any of them, and the IMU.
+      if (coefficient_targets.empty()) {
+        coefficient_targets.push_back({});
+        Column column{&effect_field, std::vector<double>(channels, 0.0)};
+        for (std::size_t i = n_joints; i < channels; ++i) column.scale[i] = 1.0;
+        columns.push_back(std::move(column));
+      }
       coefficient_targets.back().push_back(t);
+      for (const std::size_t j : owners(model, probe.targets[t].name)) {
+        columns.back().scale[j] = 1.0;
+      }
     }
   }
   double rss_base = residual.rss, rss_full = residual.rss;
@@ -282,30 +345,8 @@ EffectScore score_probe(const Probe& probe, const Residual& residual, const Para
       beta(base_columns + c) = d.step != 0.0 ? (implied - d.current) / d.step : 0.0;
     }
   }
-  std::vector<double> fitted_columns(beta.data(), beta.data() + beta.size());
-  // RSS of the clipped coefficients.
-  double rss_clipped = residual.rss;
-  {
-    std::vector<Column> cols = columns;
-    double sum = 0.0;
-    for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
-      for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {
-        for (std::size_t j = 0; j < residual.joints; ++j) {
-          const std::size_t row = f * residual.joints + j;
-          double e = residual.r_rad[c][row];
-          for (std::size_t a = 0; a < cols.size(); ++a) {
-            if (std::find(cols[a].joints.begin(), cols[a].joints.end(), j) ==
-                cols[a].joints.end()) {
-              continue;
-            }
-            e -= fitted_columns[a] * (*cols[a].field)[c][row];
-          }
-          sum += e * e;
-        }
-      }
-    }
-    rss_clipped = sum;
-  }
+  const double rss_clipped =
+      rss_of(columns, std::vector<double>(beta.data(), beta.data() + beta.size()), residual);
   const double n = residual.effective_samples;
   const double rss1 = std::min(std::max(rss_clipped, 1e-300), rss_base);
   score.status = "scored";

@@ -79,26 +79,40 @@ ErrorSummary summarize_errors(const FitnessFunction& fitness, const ParameterSet
   ErrorSummary out;
   out.detail = evaluate_in_detail(fitness, set);
   const std::size_t n = fitness.model().actuators.size();
+  const std::size_t k = fitness.channels();
+  std::vector<double> measured(k), simulated(k);
   double squared = 0.0, absolute = 0.0;
+  std::size_t joint_samples = 0;
   for (std::size_t c = 0; c < fitness.cases().size(); ++c) {
     const FitCase& fit_case = fitness.cases()[c];
     const RolloutResult& r = out.detail.rollouts[c];
     for (std::size_t f = first_scored_frame(fit_case, fitness.options().settle_s);
          f < r.frames_completed; ++f) {
       for (std::size_t j = 0; j < n; ++j) {
-        const double e = fit_case.measured_rad[f * n + j] - r.measured_rad[f * n + j];
-        squared += e * e;
-        absolute += std::abs(e);
+        absolute += std::abs(fit_case.measured_rad[f * n + j] - r.measured_rad[f * n + j]);
+        ++joint_samples;
+      }
+      fitness.measured_channels(c, f, measured.data());
+      fitness.simulated_channels(r, f, simulated.data());
+      for (std::size_t i = 0; i < k; ++i) {
+        squared += (measured[i] - simulated[i]) * (measured[i] - simulated[i]);
         ++out.samples;
       }
     }
   }
   const double samples = static_cast<double>(std::max<std::size_t>(out.samples, 1));
   out.rms_deg = out.detail.rms_deg;
-  out.mae_rad = absolute / samples;
+  out.mae_rad = absolute / static_cast<double>(std::max<std::size_t>(joint_samples, 1));
+  out.channel_rms_rad = std::sqrt(squared / samples);
   out.bic = samples * std::log(std::max(squared / samples, 1e-300)) +
             static_cast<double>(free_parameters) * std::log(samples);
   return out;
+}
+
+double imu_rms_deg(const ErrorSummary& errors) {
+  const std::vector<double>& rms = errors.detail.imu_rms_deg;
+  if (rms.size() != 2) return std::numeric_limits<double>::quiet_NaN();
+  return std::sqrt(0.5 * (rms[0] * rms[0] + rms[1] * rms[1]));
 }
 
 }  // namespace motoflex

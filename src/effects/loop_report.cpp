@@ -149,6 +149,10 @@ void write_loop_outputs(const LoopResult& result, const FitConfig& user) {
     item["val_rms_after"] = it.val_rms_after_deg;
     item["val_mae_before_rad"] = it.val_mae_before_rad;
     item["val_mae_after_rad"] = it.val_mae_after_rad;
+    if (std::isfinite(it.val_imu_rms_before_deg)) {
+      item["val_imu_rms_before"] = it.val_imu_rms_before_deg;
+      item["val_imu_rms_after"] = it.val_imu_rms_after_deg;
+    }
     item["unit"] = "deg";
     nlohmann::ordered_json refits = nlohmann::ordered_json::array();
     for (const LoopRefit& r : it.refits) {
@@ -157,6 +161,9 @@ void write_loop_outputs(const LoopResult& result, const FitConfig& user) {
                         {"train_rms", r.train_rms_deg},
                         {"val_rms", r.val_rms_deg},
                         {"val_mae_rad", r.val_mae_rad},
+                        {"val_imu_rms", std::isfinite(r.val_imu_rms_deg)
+                                            ? nlohmann::ordered_json(r.val_imu_rms_deg)
+                                            : nlohmann::ordered_json(nullptr)},
                         {"val_bic", r.val_bic},
                         {"free_parameters", r.free_parameters},
                         {"evaluations", r.evaluations},
@@ -210,6 +217,14 @@ void write_loop_outputs(const LoopResult& result, const FitConfig& user) {
        << percent_change(it.val_rms_before_deg, it.val_rms_after_deg) << ") | "
        << format("%.3f", 1e3 * it.val_mae_before_rad) << " → "
        << format("%.3f", 1e3 * it.val_mae_after_rad) << " |\n";
+  }
+  for (std::size_t i = 0; i < result.iterations.size(); ++i) {
+    const LoopIteration& it = result.iterations[i];
+    if (!std::isfinite(it.val_imu_rms_before_deg)) continue;
+    md << (i == 0 ? "\nTorso IMU (roll and pitch), validation RMS: " : "; ") << "iteration "
+       << i + 1 << " " << format("%.4f", it.val_imu_rms_before_deg) << " → "
+       << format("%.4f", it.val_imu_rms_after_deg) << " deg"
+       << (i + 1 == result.iterations.size() ? ".\n" : "");
   }
   md << "\nEvaluations: " << result.evaluations << " (fits) + " << result.probe_rollouts
      << " probe rollouts; fit time " << format("%.1f", result.fit_seconds) << " s; wall time "

@@ -67,6 +67,7 @@ std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitt
       fitness["weights"][model.actuators[j].name] = from.fitness.joint_weights[j];
     }
   }
+  if (from.fitness.imu_weight > 0.0) fitness["imu_weight"] = from.fitness.imu_weight;
   fit["fitness"] = fitness;
   fit["strategy"] = strategy_to_json(from.loop.refit_strategy);
   const FitBudget& budget = from.loop.refit_budget;

@@ -20,6 +20,7 @@ struct Sample {
   double time_s = 0.0;
   int feet_in_contact = -1;  // −1: the robot has no feet
   std::vector<double> residual_rad, command_velocity, joint_velocity, torque_nm;
+  double imu_residual_rad[2] = {0.0, 0.0};  // roll, pitch (when every log has IMU columns)
 };
 
 double central_difference(const std::vector<double>& values, const std::vector<double>& time,
@@ -114,6 +115,9 @@ ResidualAnalysis analyse_residuals(const FitnessFunction& fitness, const Paramet
   }
   double mean_period_s = 0.0;
   std::size_t periods = 0;
+  bool imu = true;
+  for (const FitCase& c : cases) imu = imu && !c.measured_imu_rad.empty();
+  std::vector<double> imu_residual[2];
   for (std::size_t c = 0; c < cases.size(); ++c) {
     const FitCase& fit_case = cases[c];
     const RolloutResult& r = rollouts[c];
@@ -133,6 +137,11 @@ ResidualAnalysis analyse_residuals(const FitnessFunction& fitness, const Paramet
         for (std::size_t k = 0; k < feet; ++k) {
           if (r.foot_force_z_n[f * feet + k] > kContactForce_n) ++s.feet_in_contact;
         }
+      }
+      if (imu) {
+        s.imu_residual_rad[0] = fit_case.measured_imu_rad[2 * f] - r.imu_roll_rad[f];
+        s.imu_residual_rad[1] = fit_case.measured_imu_rad[2 * f + 1] - r.imu_pitch_rad[f];
+        for (int a = 0; a < 2; ++a) imu_residual[a].push_back(s.imu_residual_rad[a]);
       }
       for (std::size_t j = 0; j < n; ++j) {
         const std::size_t k = f * n + j;
@@ -198,6 +207,9 @@ ResidualAnalysis analyse_residuals(const FitnessFunction& fitness, const Paramet
     out.joints.push_back(std::move(jr));
   }
   out.rms_deg = rms_deg_of(all);
+  if (imu) {
+    for (const auto& r : imu_residual) out.imu_rms_deg.push_back(rms_deg_of(r));
+  }
 
   out.series_columns = {"case", "time_s", "feet_in_contact"};
   for (const auto& a : model.actuators) {
@@ -206,6 +218,9 @@ ResidualAnalysis analyse_residuals(const FitnessFunction& fitness, const Paramet
       out.series_columns.push_back(a.name + leaf);
     }
   }
+  if (imu)
+    out.series_columns.insert(out.series_columns.end(),
+                              {"imu.roll.residual_rad", "imu.pitch.residual_rad"});
   for (const Sample& s : samples) {
     std::vector<double> row = {static_cast<double>(s.case_index), s.time_s,
                                static_cast<double>(s.feet_in_contact)};
@@ -213,6 +228,7 @@ ResidualAnalysis analyse_residuals(const FitnessFunction& fitness, const Paramet
       row.insert(row.end(),
                  {s.residual_rad[j], s.command_velocity[j], s.joint_velocity[j], s.torque_nm[j]});
     }
+    if (imu) row.insert(row.end(), {s.imu_residual_rad[0], s.imu_residual_rad[1]});
     out.series_rows.push_back(std::move(row));
   }
   return out;
@@ -224,6 +240,10 @@ nlohmann::ordered_json residual_analysis_json(const ResidualAnalysis& analysis) 
   };
   nlohmann::ordered_json out;
   out["rms_deg"] = analysis.rms_deg;
+  if (!analysis.imu_rms_deg.empty()) {
+    out["imu_rms_deg"] = {{"roll", number(analysis.imu_rms_deg[0])},
+                          {"pitch", number(analysis.imu_rms_deg[1])}};
+  }
   for (const JointResiduals& jr : analysis.joints) {
     nlohmann::ordered_json j;
     j["joint"] = jr.joint;

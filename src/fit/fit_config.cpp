@@ -224,7 +224,7 @@ std::vector<std::string> list_logs(const std::string& folder_or_file, const std:
 }
 
 std::vector<FitCase> load_fit_cases(const Scenario& scenario,
-                                    const std::vector<std::string>& log_paths) {
+                                    const std::vector<std::string>& log_paths, bool need_imu) {
   const RobotModel& model = *scenario.model;
   const std::size_t n = model.actuators.size();
   std::vector<FitCase> cases;
@@ -262,6 +262,16 @@ std::vector<FitCase> load_fit_cases(const Scenario& scenario,
     }
     fit_case.commands = CommandTrajectory(log.time_s, std::move(commanded), n);
     fit_case.measured_rad = std::move(measured);
+    if (!log.imu_roll_rad.empty() && !log.imu_pitch_rad.empty()) {
+      fit_case.measured_imu_rad.resize(2 * log.frames());
+      for (std::size_t f = 0; f < log.frames(); ++f) {
+        fit_case.measured_imu_rad[2 * f] = log.imu_roll_rad[f];
+        fit_case.measured_imu_rad[2 * f + 1] = log.imu_pitch_rad[f];
+      }
+    } else if (need_imu) {
+      throw InputError(path, 1, log.imu_roll_rad.empty() ? "imu.roll" : "imu.pitch",
+                       "missing column: the fit scores the IMU (fitness.imu_weight > 0)");
+    }
     fit_case.options = scenario.rollout;
     for (const auto& [name, value] : log.meta.parameters) {
       const auto index = model.parameters.find(name);
@@ -420,11 +430,13 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
   }
 
   if (const auto fitness = root.find("fitness")) {
-    fitness->require_keys_within({"m", "settle_s", "weights", "early_termination"});
+    fitness->require_keys_within({"m", "settle_s", "weights", "imu_weight", "early_termination"});
     config.early_termination = fitness->get_bool("early_termination", true);
     config.fitness.m = fitness->get_double("m", config.fitness.m);
     if (!(config.fitness.m >= 0.0)) fitness->at("m").fail("must be >= 0");
     config.fitness.settle_s = fitness->get_double("settle_s", 0.0);
+    config.fitness.imu_weight = fitness->get_double("imu_weight", 0.0);
+    if (!(config.fitness.imu_weight >= 0.0)) fitness->at("imu_weight").fail("must be >= 0");
     if (const auto weights = fitness->find("weights")) {
       const RobotModel& model = *config.scenario->model;
       config.fitness.joint_weights.assign(model.actuators.size(), 1.0);
@@ -454,11 +466,13 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
   config.space = std::make_shared<ParameterSpace>(config.free, base);
   try {
     config.train = std::make_shared<FitnessFunction>(
-        config.scenario->model, load_fit_cases(*config.scenario, config.train_logs),
+        config.scenario->model,
+        load_fit_cases(*config.scenario, config.train_logs, config.fitness.imu_weight > 0.0),
         config.fitness);
     if (!config.validation_logs.empty()) {
       config.validation = std::make_shared<FitnessFunction>(
-          config.scenario->model, load_fit_cases(*config.scenario, config.validation_logs),
+          config.scenario->model,
+          load_fit_cases(*config.scenario, config.validation_logs, config.fitness.imu_weight > 0.0),
           config.fitness);
     }
   } catch (const std::invalid_argument& error) {
@@ -493,6 +507,8 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
   id["fitness"] = {{"m", config.fitness.m},
                    {"settle_s", config.fitness.settle_s},
                    {"weights", config.fitness.joint_weights}};
+  // Only when used, so that the hashes of existing joint-only run dirs stay valid.
+  if (config.fitness.imu_weight > 0.0) id["fitness"]["imu_weight"] = config.fitness.imu_weight;
   id["strategy"] = strategy_to_json(config.strategy);
   id["seed"] = config.seed;
   config.identity = nlohmann::json(id);

@@ -18,18 +18,27 @@ DetailedEvaluation evaluate_in_detail(const FitnessFunction& fitness, const Para
   out.breakdown = fitness.evaluate(set, std::numeric_limits<double>::infinity(), &out.rollouts);
   const std::size_t n = fitness.model().actuators.size();
   std::vector<double> sum_per_joint(n, 0.0);
+  double imu_sum[2] = {0.0, 0.0};
+  bool imu = true;
   std::size_t count = 0;
   for (std::size_t c = 0; c < fitness.cases().size(); ++c) {
     const FitCase& fit_case = fitness.cases()[c];
     const RolloutResult& r = out.rollouts[c];
     double case_sum = 0.0;
     std::size_t case_count = 0;
+    imu = imu && !fit_case.measured_imu_rad.empty();
     for (std::size_t f = first_scored_frame(fit_case, fitness.options().settle_s);
          f < r.frames_completed; ++f) {
       for (std::size_t j = 0; j < n; ++j) {
         const double e = fit_case.measured_rad[f * n + j] - r.measured_rad[f * n + j];
         sum_per_joint[j] += e * e;
         case_sum += e * e;
+      }
+      if (imu) {
+        const double roll = fit_case.measured_imu_rad[2 * f] - r.imu_roll_rad[f];
+        const double pitch = fit_case.measured_imu_rad[2 * f + 1] - r.imu_pitch_rad[f];
+        imu_sum[0] += roll * roll;
+        imu_sum[1] += pitch * pitch;
       }
       ++count;
       ++case_count;
@@ -44,6 +53,9 @@ DetailedEvaluation evaluate_in_detail(const FitnessFunction& fitness, const Para
                                                : std::sqrt(sum_per_joint[j] / count) * kDegPerRad);
   }
   out.rms_deg = count == 0 ? 0.0 : std::sqrt(total / (count * n)) * kDegPerRad;
+  if (imu && count > 0) {
+    for (const double sum : imu_sum) out.imu_rms_deg.push_back(std::sqrt(sum / count) * kDegPerRad);
+  }
   return out;
 }
 
@@ -55,6 +67,9 @@ nlohmann::ordered_json rms_json(const FitnessFunction& fitness, const DetailedEv
     per_joint[fitness.model().actuators[j].name] = eval.rms_deg_per_joint[j];
   }
   out["per_joint"] = per_joint;
+  if (!eval.imu_rms_deg.empty()) {
+    out["imu"] = {{"roll", eval.imu_rms_deg[0]}, {"pitch", eval.imu_rms_deg[1]}};
+  }
   return out;
 }
 

@@ -26,6 +26,11 @@ FitnessFunction::FitnessFunction(std::shared_ptr<const RobotModel> model,
     if (c.commands.joints() != n || c.measured_rad.size() != c.commands.frames() * n) {
       throw std::invalid_argument("case " + c.name + ": measured angles do not match the model");
     }
+    if (!(options_.imu_weight >= 0.0)) throw std::invalid_argument("imu_weight must be >= 0");
+    if (scores_imu() && c.measured_imu_rad.size() != 2 * c.commands.frames()) {
+      throw std::invalid_argument("case " + c.name +
+                                  ": imu_weight > 0 needs imu.roll and imu.pitch in every log");
+    }
     const std::size_t first = first_scored_frame(c, options_.settle_s);
     if (first >= c.commands.frames()) {
       throw std::invalid_argument("case " + c.name + ": settle_s covers the whole log");
@@ -58,6 +63,11 @@ FitnessBreakdown FitnessFunction::evaluate(const ParameterSet& parameters, doubl
       for (std::size_t j = 0; j < n; ++j) {
         const double e = real[j] - sim[j];
         score.squared_error_rad2 += weights_[j] * e * e;
+      }
+      if (scores_imu()) {
+        const double roll = fit_case.measured_imu_rad[2 * frame] - result.imu_roll_rad[frame];
+        const double pitch = fit_case.measured_imu_rad[2 * frame + 1] - result.imu_pitch_rad[frame];
+        score.squared_error_rad2 += options_.imu_weight * (roll * roll + pitch * pitch);
       }
       ++score.frames;
       if (std::isfinite(stop_threshold) &&
@@ -92,6 +102,38 @@ FitnessBreakdown FitnessFunction::evaluate(const ParameterSet& parameters, doubl
   }
   out.fitness = finished_fitness;
   return out;
+}
+
+void FitnessFunction::simulated_channels(const RolloutResult& result, std::size_t frame,
+                                         double* out) const {
+  const std::size_t n = weights_.size();
+  for (std::size_t j = 0; j < n; ++j) {
+    out[j] = std::sqrt(weights_[j]) * result.measured_rad[frame * n + j];
+  }
+  if (scores_imu()) {
+    const double w = std::sqrt(options_.imu_weight);
+    out[n] = w * result.imu_roll_rad[frame];
+    out[n + 1] = w * result.imu_pitch_rad[frame];
+  }
+}
+
+void FitnessFunction::measured_channels(std::size_t c, std::size_t frame, double* out) const {
+  const FitCase& fit_case = cases_[c];
+  const std::size_t n = weights_.size();
+  for (std::size_t j = 0; j < n; ++j) {
+    out[j] = std::sqrt(weights_[j]) * fit_case.measured_rad[frame * n + j];
+  }
+  if (scores_imu()) {
+    const double w = std::sqrt(options_.imu_weight);
+    out[n] = w * fit_case.measured_imu_rad[2 * frame];
+    out[n + 1] = w * fit_case.measured_imu_rad[2 * frame + 1];
+  }
+}
+
+std::string FitnessFunction::channel_name(std::size_t channel) const {
+  const std::size_t n = weights_.size();
+  if (channel < n) return model_->actuators[channel].name;
+  return channel == n ? "imu.roll" : "imu.pitch";
 }
 
 }  // namespace motoflex

@@ -34,6 +34,18 @@ std::optional<StepSolver> parse_step_solver(const std::string& text) {
   return std::nullopt;
 }
 
+void read_step_settings(const YamlValue& physics, RolloutOptions& rollout) {
+  rollout.dt_s = physics.get_double("dt_s", rollout.dt_s);
+  if (!(rollout.dt_s > 0.0 && rollout.dt_s <= 0.01)) {
+    physics.at("dt_s").fail("must be in (0, 0.01] s");
+  }
+  if (const auto solver = physics.find("solver")) {
+    const auto parsed = parse_step_solver(solver->as_string());
+    if (!parsed) solver->fail("expected 'step' or 'quick'");
+    rollout.solver = *parsed;
+  }
+}
+
 Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides) {
   const YamlValue root = YamlValue::load_file(path);
   root.require_keys_within({"name", "robot", "servo", "seed", "physics", "motion", "parameters"});
@@ -43,15 +55,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   if (const auto physics = root.find("physics")) {
     physics->require_keys_within({"dt_s", "solver", "quickstep_iterations", "gear_substeps",
                                   "flex_sub_bodies", "universal_joints", "settle_s", "hold_torso"});
-    rollout.dt_s = physics->get_double("dt_s", rollout.dt_s);
-    if (!(rollout.dt_s > 0.0 && rollout.dt_s <= 0.01)) {
-      physics->at("dt_s").fail("must be in (0, 0.01] s");
-    }
-    if (const auto solver = physics->find("solver")) {
-      const auto parsed = parse_step_solver(solver->as_string());
-      if (!parsed) solver->fail("expected 'step' or 'quick'");
-      rollout.solver = *parsed;
-    }
+    read_step_settings(*physics, rollout);
     rollout.quickstep_iterations =
         physics->get_int("quickstep_iterations", rollout.quickstep_iterations);
     rollout.gear_substeps = physics->get_int("gear_substeps", rollout.gear_substeps);

@@ -67,15 +67,7 @@ void read_physics(const YamlValue& root, RolloutOptions& rollout, double& cleara
   const auto physics = root.find("physics");
   if (!physics) return;
   physics->require_keys_within({"dt_s", "solver", "initial_clearance_m"});
-  rollout.dt_s = physics->get_double("dt_s", rollout.dt_s);
-  if (!(rollout.dt_s > 0.0 && rollout.dt_s <= 0.01)) {
-    physics->at("dt_s").fail("must be in (0, 0.01] s");
-  }
-  if (const auto solver = physics->find("solver")) {
-    const auto parsed = parse_step_solver(solver->as_string());
-    if (!parsed) solver->fail("expected 'step' or 'quick'");
-    rollout.solver = *parsed;
-  }
+  read_step_settings(*physics, rollout);
   if (const auto clearance = physics->find("initial_clearance_m")) {
     clearance_m = clearance->as_double();
     if (!(clearance_m >= 0.0 && clearance_m <= 0.1)) clearance->fail("must be in [0, 0.1] m");

@@ -98,6 +98,11 @@ class Strategy {
   void stop(StopReason reason, std::string detail);
   // The fields of this base class, for the derived save_state/load_state.
   nlohmann::json save_common() const;
+  // The start of every derived save_state: name, dimension, the options that must match on
+  // load, the common fields, and the random state. Every draw comes from a stream keyed by
+  // (seed, generation, individual, purpose) and starts at counter 0, so seed and generation
+  // are the whole random state.
+  nlohmann::json save_header(nlohmann::json options, std::uint64_t seed) const;
   void load_common(const nlohmann::json& common);
   // Throws CheckpointError unless state["strategy"] == name() and state["dimension"] matches.
   void check_identity(const nlohmann::json& state) const;

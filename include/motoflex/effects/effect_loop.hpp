@@ -8,6 +8,7 @@
 // stopped when run again with the same arguments.
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,12 +17,16 @@
 
 namespace motoflex {
 
+// An IMU error where the logs have no IMU columns.
+inline constexpr double kNoImu = std::numeric_limits<double>::quiet_NaN();
+
 struct LoopRefit {
   std::string effect;
   std::string run_dir;
   double train_rms_deg = 0.0;
   double val_rms_deg = 0.0;
   double val_mae_rad = 0.0;
+  double val_imu_rms_deg = kNoImu;  // torso roll and pitch together, when the logs have them
   double val_bic = 0.0;
   std::size_t free_parameters = 0;
   std::uint64_t evaluations = 0;
@@ -38,6 +43,7 @@ struct LoopIteration {
   double train_rms_before_deg = 0.0, train_rms_after_deg = 0.0;
   double val_rms_before_deg = 0.0, val_rms_after_deg = 0.0;
   double val_mae_before_rad = 0.0, val_mae_after_rad = 0.0;
+  double val_imu_rms_before_deg = kNoImu, val_imu_rms_after_deg = kNoImu;
   double ranking_seconds = 0.0;
 };
 
@@ -47,10 +53,10 @@ struct LoopResult {
   std::vector<std::string> final_model;  // base model + added effects
   std::string base_run_dir, final_run_dir;
   std::vector<LoopIteration> iterations;
-  std::uint64_t evaluations = 0;  // of every fit the loop ran (from their summaries)
-  std::uint64_t probe_rollouts = 0;
-  double fit_seconds = 0.0;   // sum of the fits' own wall times
-  double wall_seconds = 0.0;  // this invocation
+  std::uint64_t evaluations = 0;     // of every fit the loop ran (from their summaries)
+  std::uint64_t probe_rollouts = 0;  // signature probes and the refits' start checks
+  double fit_seconds = 0.0;          // sum of the fits' own wall times
+  double wall_seconds = 0.0;         // this invocation
 };
 
 // Runs the loop of the fit config at `fit_path` (with its `loop:` options) into its out dir and

@@ -29,13 +29,17 @@ FinishedFit ensure_fit(const FitConfig& config);
 
 // Error statistics of a parameter set on one list of logs (model units: rad).
 struct ErrorSummary {
-  double rms_deg = 0.0;
-  double mae_rad = 0.0;     // mean absolute error over the scored frames (BAM's metric)
-  std::size_t samples = 0;  // scored frames × joints
-  double bic = 0.0;         // samples·ln(MSE) + free·ln(samples)
+  double rms_deg = 0.0;     // joint encoders
+  double mae_rad = 0.0;     // joint encoders: mean absolute error over the scored frames (BAM's)
+  std::size_t samples = 0;  // scored frames × the fitness's channels
+  // Over the fitness's channels (joints with their weights, and the IMU when it is scored):
+  double channel_rms_rad = 0.0;  // √(MSE)
+  double bic = 0.0;              // samples·ln(MSE) + free·ln(samples)
   DetailedEvaluation detail;
 };
 ErrorSummary summarize_errors(const FitnessFunction& fitness, const ParameterSet& set,
                               std::size_t free_parameters);
+// RMS of the torso IMU's roll and pitch errors together (deg); NaN without IMU columns.
+double imu_rms_deg(const ErrorSummary& errors);
 
 }  // namespace motoflex

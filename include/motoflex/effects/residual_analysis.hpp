@@ -38,6 +38,7 @@ struct JointResiduals {
 
 struct ResidualAnalysis {
   double rms_deg = 0.0;
+  std::vector<double> imu_rms_deg;  // torso roll, pitch; empty unless every log has IMU columns
   std::vector<JointResiduals> joints;
   // Time series for plots: one row per scored frame of every log.
   std::vector<std::string> series_columns;
@@ -47,8 +48,8 @@ struct ResidualAnalysis {
 ResidualAnalysis analyse_residuals(const FitnessFunction& fitness, const ParameterSet& set);
 
 nlohmann::ordered_json residual_analysis_json(const ResidualAnalysis& analysis);
-// CSV of the time series (case index, time, then per joint residual, commanded and simulated
-// velocity, load torque; and feet in contact).
+// CSV of the time series (case index, time, feet in contact, then per joint residual, commanded
+// and simulated velocity, load torque; then the IMU's roll and pitch residuals if it has them).
 std::string residual_series_csv(const ResidualAnalysis& analysis);
 
 }  // namespace motoflex

@@ -46,8 +46,9 @@ struct FitBudget {
 struct LoopOptions {
   std::size_t candidates = 3;      // top-ranked effects refit per iteration
   std::size_t max_iterations = 3;  // effects added at most
-  // A candidate is added only if it lowers the validation RMS by at least this fraction and
-  // its validation BIC (n·ln MSE + k·ln n) beats the current model's.
+  // A candidate is added only if it lowers the validation RMS (over the fitness's channels:
+  // the joints, and the IMU when it is scored) by at least this fraction and its validation
+  // BIC (n·ln MSE + k·ln n, over the same channels) beats the current model's.
   double min_gain = 0.05;
   std::vector<std::string> effects;  // candidates considered (empty: the whole library)
   StrategyConfig refit_strategy;     // the short warm-started refits
@@ -84,6 +85,7 @@ struct FitOverrides {
 //   fixed: {motor.stiffness: 0.7}      # values on top of the robot defaults
 //   effects: [stribeck, sensor_delay]  # frees each effect's parameters (effect_library.hpp)
 //   fitness: {m: 2, settle_s: 0.0, weights: {LKneePitch: 2.0}, early_termination: true}
+//   # imu_weight: 1 also scores the logs' imu.roll/imu.pitch (fitness.hpp); default 0
 //   strategy: {kind: mu_plus_lambda, mu: 10, lambda: 40, kappa: 3}
 //   budget: {generations: 30, evaluations: 2000, seconds: 600}
 //   threads: 2
@@ -139,8 +141,11 @@ FitOverrides overrides_from_json(const nlohmann::json& json);
 FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides = {});
 
 // The fit cases of a list of logs for a scenario's robot (used for training and validation).
+// Each case keeps the log's IMU columns when it has them; with `need_imu` a log without them
+// throws InputError naming the log (a fitness with imu_weight > 0 scores them).
 std::vector<FitCase> load_fit_cases(const Scenario& scenario,
-                                    const std::vector<std::string>& log_paths);
+                                    const std::vector<std::string>& log_paths,
+                                    bool need_imu = false);
 
 // Logs of a folder (every *.csv, sorted by name) or a single log file.
 std::vector<std::string> list_logs(const std::string& folder_or_file, const std::string& field);

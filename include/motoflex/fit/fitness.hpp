@@ -23,6 +23,13 @@ struct FitnessOptions {
   double settle_s = 0.0;
   // Per-joint weights w_i in model actuator order (empty: all 1).
   std::vector<double> joint_weights;
+  // Weight of the torso IMU's roll and pitch errors (rad², like the joints): F then adds
+  // imu_weight · Σ_t [(roll_real − roll_sim)² + (pitch_real − pitch_sim)²] to each robot's sum
+  // before dividing by T^m. 0 (default) is seed 001's joint-only F. Link bending, foot slip and
+  // ground compliance move the torso far more than they move the joint encoders, so a log
+  // with IMU columns tells them apart; every log of the fit must then have imu.roll and
+  // imu.pitch.
+  double imu_weight = 0.0;
 };
 
 // One robot of a fit: a commanded motion, what the real robot measured, and how to simulate it.
@@ -30,6 +37,8 @@ struct FitCase {
   std::string name;                  // log name, for reports
   CommandTrajectory commands;        // commanded angles (the log's .cmd columns)
   std::vector<double> measured_rad;  // the log's .meas columns, frame-major, model order
+  // The log's imu.roll, imu.pitch per frame ([frame * 2 + 0|1], rad); empty without them.
+  std::vector<double> measured_imu_rad;
   RolloutOptions options;
   // Per-log model parameters (sidecar `parameters`, e.g. a bench's mass), applied on top.
   std::vector<std::pair<std::size_t, double>> parameter_overrides;
@@ -39,7 +48,7 @@ struct FitCase {
 std::size_t first_scored_frame(const FitCase& fit_case, double settle_s);
 
 struct CaseScore {
-  double squared_error_rad2 = 0.0;  // Σ_t Σ_i w_i (q_real − q_sim)² over scored frames
+  double squared_error_rad2 = 0.0;  // Σ_t Σ_i w_i (q_real − q_sim)² (+ the IMU term), scored frames
   std::size_t frames = 0;           // T: scored frames simulated before the end or a fall
   std::size_t frames_requested = 0;
   double fitness = 0.0;  // squared_error / T^m (+inf for a failed rollout)
@@ -71,6 +80,18 @@ class FitnessFunction {
   const RobotModel& model() const { return *model_; }
   const std::vector<FitCase>& cases() const { return cases_; }
   const FitnessOptions& options() const { return options_; }
+
+  // The scored channels of a frame: the actuated joints (model order), then the IMU's roll and
+  // pitch when imu_weight > 0. A channel's value is √weight × angle (rad), so the squared
+  // distance of two channel vectors summed over the scored frames is the fitness's error sum;
+  // residual analyses and effect signatures work in these channels.
+  bool scores_imu() const { return options_.imu_weight > 0.0; }
+  std::size_t channels() const { return weights_.size() + (scores_imu() ? 2 : 0); }
+  // Writes channels() values of frame `frame` of a rollout / of case `c`'s measurements.
+  void simulated_channels(const RolloutResult& result, std::size_t frame, double* out) const;
+  void measured_channels(std::size_t c, std::size_t frame, double* out) const;
+  // "LHipRoll", ..., then "imu.roll", "imu.pitch".
+  std::string channel_name(std::size_t channel) const;
 
  private:
   std::shared_ptr<const RobotModel> model_;

@@ -66,4 +66,10 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
 
 std::optional<StepSolver> parse_step_solver(const std::string& text);
 
+class YamlValue;
+// Reads a `physics:` section's `dt_s` (in (0, 0.01] s) and `solver` (step | quick) into
+// `rollout`, leaving what is absent; throws InputError naming the key otherwise. The caller
+// checks which other keys the section may have.
+void read_step_settings(const YamlValue& physics, RolloutOptions& rollout);
+
 }  // namespace motoflex
