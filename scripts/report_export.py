@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""MuJoCo vs motoflex on the MJCF export (issue 7's closing report).
+
+For each model, `motoflex export --format mjcf --check-mujoco LOG` replays the log's commands in
+motoflex (ODE) and in MuJoCo on the export, 1 ms steps in both, and prints the joint-angle RMS
+between the two and both engines' steps/s. Each check runs --repeats times (the RMS is the same
+every time; steps/s are the median, and the ratio is taken within each run, so machine load
+affects both engines alike).
+
+Models: the servo pendulum bench (BAM's servo law, chirp log), and the Nao held by its torso on
+the 10 s validation excitation log with the truth's parameters: rigid links and ideal servos;
+the full MoToFlex servo; the full servo with 2 flexible sub-bodies per thigh and tibia.
+
+Usage: report_export.py [--binary build/motoflex] [--repeats 3] [--out runs/export_report]
+Writes OUT/export_report.md and OUT/export_report.json.
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def truth_parameters(path, out):
+    """A truth file's parameters without sensor noise and quantisation (motoflex's encoders
+    would otherwise read differently from MuJoCo's exact joint angles)."""
+    with open(path) as f:
+        parameters = json.load(f)["parameters"]
+    parameters["sensor.noise_rad"] = 0.0
+    parameters["sensor.resolution_bits"] = 0
+    with open(out, "w") as f:
+        json.dump(parameters, f)
+    return out
+
+
+def check(binary, params, robot, servo, flex, log, out_xml, held):
+    command = [binary, "export", params, "--robot", robot, "--servo", servo,
+               "--flex-sub-bodies", str(flex), "--format", "mjcf", "--out", out_xml,
+               "--check-mujoco", log]
+    if held:
+        command += ["--hold-torso", "--settle", "0.5"]
+    line = subprocess.run(command, check=True, capture_output=True, text=True).stdout
+    return json.loads(line.strip().splitlines()[-1])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--binary", default=os.path.join(ROOT, "build", "motoflex"))
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--out", default=os.path.join(ROOT, "runs", "export_report"))
+    args = parser.parse_args()
+    if not os.path.exists(args.binary):
+        sys.exit(f"report_export: no binary at {args.binary} (run scripts/build first)")
+    os.makedirs(args.out, exist_ok=True)
+
+    nao_params = truth_parameters(
+        os.path.join(ROOT, "reference_data/nao/truth/validation/excitation_held.json"),
+        os.path.join(args.out, "nao_truth.json"))
+    nao_log = os.path.join(ROOT, "reference_data/nao/validation/excitation_held.csv")
+    pendulum_params = os.path.join(args.out, "pendulum.json")
+    with open(pendulum_params, "w") as f:
+        json.dump({}, f)  # the bench's defaults
+    pendulum_log = os.path.join(ROOT, "reference_data/bench/synthetic_sin_sin.csv")
+    models = [
+        ("servo pendulum, bench servo", pendulum_params, "servo_pendulum", "bench", 1,
+         pendulum_log, False),
+        ("Nao held, rigid, ideal servos", nao_params, "nao", "ideal", 1, nao_log, True),
+        ("Nao held, rigid, full MoToFlex servo", nao_params, "nao", "motoflex", 1, nao_log, True),
+        ("Nao held, full MoToFlex servo + 2 flexible sub-bodies", nao_params, "nao", "motoflex", 2,
+         nao_log, True),
+    ]
+    rows = []
+    for label, params, robot, servo, flex, log, held in models:
+        runs = [check(args.binary, params, os.path.join(ROOT, "scenarios/robots", robot), servo,
+                      flex, log, os.path.join(args.out, f"{robot}_{servo}_{flex}.xml"), held)
+                for _ in range(args.repeats)]
+        row = {
+            "model": label,
+            "rms_deg": runs[0]["rms_deg"],
+            "rms_deg_per_joint": runs[0]["rms_deg_per_joint"],
+            "mujoco_steps_per_s": statistics.median(r["mujoco_steps_per_s"] for r in runs),
+            "motoflex_steps_per_s": statistics.median(r["motoflex_steps_per_s"] for r in runs),
+            "mujoco_over_motoflex": statistics.median(
+                r["mujoco_steps_per_s"] / r["motoflex_steps_per_s"] for r in runs),
+        }
+        rows.append(row)
+        print(f"{label}: RMS {row['rms_deg']:.4f} deg, MuJoCo {row['mujoco_steps_per_s']:.0f} "
+              f"vs motoflex {row['motoflex_steps_per_s']:.0f} steps/s", flush=True)
+
+    lines = ["| model | RMS MuJoCo vs motoflex (deg) | worst joint (deg) | MuJoCo steps/s | "
+             "motoflex steps/s | MuJoCo / motoflex (median of runs) |",
+             "|---|---|---|---|---|---|"]
+    for r in rows:
+        worst = max(r["rms_deg_per_joint"].items(), key=lambda item: item[1])
+        lines.append(f"| {r['model']} | {r['rms_deg']:.4f} | {worst[1]:.4f} ({worst[0]}) | "
+                     f"{r['mujoco_steps_per_s']:.0f} | {r['motoflex_steps_per_s']:.0f} | "
+                     f"{r['mujoco_over_motoflex']:.2f} |")
+    with open(os.path.join(args.out, "export_report.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    with open(os.path.join(args.out, "export_report.json"), "w") as f:
+        json.dump(rows, f, indent=2)
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
