@@ -26,6 +26,13 @@ void OpenMpEvaluator::evaluate(Problem& problem, const std::vector<std::vector<d
                                std::vector<double>& fitness, const EvaluationContext& context) {
   fitness.assign(xs.size(), std::numeric_limits<double>::quiet_NaN());
   const long count = static_cast<long>(xs.size());
+  if (count == 1 && threads_ > 1) {
+    // One individual: no parallel region here; the problem may use the threads itself.
+    EvaluationContext own = context;
+    own.spare_threads = threads_;
+    problem.evaluate_batch(xs, fitness, own);
+    return;
+  }
   // An exception must not leave an OpenMP region: keep the one of the lowest index, so which
   // one the caller sees does not depend on the thread count, and rethrow after the loop.
   std::exception_ptr first_error;

@@ -66,7 +66,8 @@ void FitProblem::evaluate_batch(const std::vector<std::vector<double>>& xs,
   for (std::size_t k = 0; k < xs.size(); ++k) {
     const double threshold = config_.early_termination ? context.stop_threshold
                                                        : std::numeric_limits<double>::infinity();
-    const FitnessBreakdown result = config_.train->evaluate(config_.space->apply(xs[k]), threshold);
+    const FitnessBreakdown result = config_.train->evaluate(config_.space->apply(xs[k]), threshold,
+                                                            nullptr, context.spare_threads);
     fitness[k] = result.fitness;
     std::uint64_t simulated = 0, requested = 0;
     for (const auto& c : result.cases) simulated += c.frames;

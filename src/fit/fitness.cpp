@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "motoflex/sim/ode_runtime.hpp"
+
 namespace motoflex {
 
 std::size_t first_scored_frame(const FitCase& fit_case, double settle_s) {
@@ -39,62 +41,94 @@ FitnessFunction::FitnessFunction(std::shared_ptr<const RobotModel> model,
   }
 }
 
-FitnessBreakdown FitnessFunction::evaluate(const ParameterSet& parameters, double stop_threshold,
-                                           std::vector<RolloutResult>* rollouts) const {
-  FitnessBreakdown out;
+CaseScore FitnessFunction::score_case(std::size_t c, const ParameterSet& parameters,
+                                      double finished_fitness, double stop_threshold,
+                                      RolloutResult& result, bool& stopped) const {
   const std::size_t n = model_->actuators.size();
+  const FitCase& fit_case = cases_[c];
+  ParameterSet set = parameters;
+  for (const auto& [index, value] : fit_case.parameter_overrides) set.set(index, value);
+  const std::size_t first = first_scored_frame_[c];
+  const double t_max = static_cast<double>(fit_case.commands.frames() - first);
+  const double t_max_power = std::pow(t_max, options_.m);
+  CaseScore score;
+  score.frames_requested = fit_case.commands.frames() - first;
+  stopped = false;
+  // Accumulates the error frame by frame; asks the rollout to stop once the lower bound of
+  // the final fitness reaches the threshold.
+  const FrameObserver observer = [&](const RolloutResult& partial, std::size_t frame) {
+    if (frame < first) return true;
+    const double* sim = &partial.measured_rad[frame * n];
+    const double* real = &fit_case.measured_rad[frame * n];
+    for (std::size_t j = 0; j < n; ++j) {
+      const double e = real[j] - sim[j];
+      score.squared_error_rad2 += weights_[j] * e * e;
+    }
+    if (scores_imu()) {
+      const double roll = fit_case.measured_imu_rad[2 * frame] - partial.imu_roll_rad[frame];
+      const double pitch = fit_case.measured_imu_rad[2 * frame + 1] - partial.imu_pitch_rad[frame];
+      score.squared_error_rad2 += options_.imu_weight * (roll * roll + pitch * pitch);
+    }
+    ++score.frames;
+    if (std::isfinite(stop_threshold) &&
+        finished_fitness + score.squared_error_rad2 / t_max_power >= stop_threshold) {
+      stopped = true;
+      return false;
+    }
+    return true;
+  };
+  result = run_rollout(*model_, set, fit_case.commands, fit_case.options, observer);
+  score.end = result.end;
+  score.end_detail = result.end_detail;
+  if (stopped) {
+    score.fitness = score.squared_error_rad2 / t_max_power;
+  } else if (result.end == RolloutEnd::kModelError || result.end == RolloutEnd::kDiverged ||
+             score.frames == 0) {
+    // Failure is a score: the worst one.
+    score.fitness = std::numeric_limits<double>::infinity();
+  } else {
+    score.fitness =
+        score.squared_error_rad2 / std::pow(static_cast<double>(score.frames), options_.m);
+  }
+  return score;
+}
+
+FitnessBreakdown FitnessFunction::evaluate(const ParameterSet& parameters, double stop_threshold,
+                                           std::vector<RolloutResult>* rollouts,
+                                           int threads) const {
+  FitnessBreakdown out;
+  const std::size_t count = cases_.size();
+  if (threads > 1 && count > 1 && !std::isfinite(stop_threshold)) {
+    // Nothing stops early, so the cases are independent: simulate them at once and add them
+    // up in order, as the serial loop below does.
+    std::vector<CaseScore> scores(count);
+    std::vector<RolloutResult> results(count);
+    ensure_ode_ready();  // the process-wide part, before the workers start
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (long c = 0; c < static_cast<long>(count); ++c) {
+      ensure_ode_ready();  // this worker's own ODE data
+      bool stopped = false;
+      const auto i = static_cast<std::size_t>(c);
+      scores[i] = score_case(i, parameters, 0.0, stop_threshold, results[i], stopped);
+    }
+    for (std::size_t c = 0; c < count; ++c) {
+      out.fitness += scores[c].fitness;
+      out.cases.push_back(std::move(scores[c]));
+      if (rollouts != nullptr) rollouts->push_back(std::move(results[c]));
+    }
+    return out;
+  }
   double finished_fitness = 0.0;  // Σ of the cases already completed
-  for (std::size_t c = 0; c < cases_.size(); ++c) {
-    const FitCase& fit_case = cases_[c];
-    ParameterSet set = parameters;
-    for (const auto& [index, value] : fit_case.parameter_overrides) set.set(index, value);
-    const std::size_t first = first_scored_frame_[c];
-    const double t_max = static_cast<double>(fit_case.commands.frames() - first);
-    const double t_max_power = std::pow(t_max, options_.m);
-    CaseScore score;
-    score.frames_requested = fit_case.commands.frames() - first;
+  for (std::size_t c = 0; c < count; ++c) {
+    RolloutResult result;
     bool stopped = false;
-    // Accumulates the error frame by frame; asks the rollout to stop once the lower bound of
-    // the final fitness reaches the threshold.
-    const FrameObserver observer = [&](const RolloutResult& result, std::size_t frame) {
-      if (frame < first) return true;
-      const double* sim = &result.measured_rad[frame * n];
-      const double* real = &fit_case.measured_rad[frame * n];
-      for (std::size_t j = 0; j < n; ++j) {
-        const double e = real[j] - sim[j];
-        score.squared_error_rad2 += weights_[j] * e * e;
-      }
-      if (scores_imu()) {
-        const double roll = fit_case.measured_imu_rad[2 * frame] - result.imu_roll_rad[frame];
-        const double pitch = fit_case.measured_imu_rad[2 * frame + 1] - result.imu_pitch_rad[frame];
-        score.squared_error_rad2 += options_.imu_weight * (roll * roll + pitch * pitch);
-      }
-      ++score.frames;
-      if (std::isfinite(stop_threshold) &&
-          finished_fitness + score.squared_error_rad2 / t_max_power >= stop_threshold) {
-        stopped = true;
-        return false;
-      }
-      return true;
-    };
-    RolloutResult result = run_rollout(*model_, set, fit_case.commands, fit_case.options, observer);
-    score.end = result.end;
-    score.end_detail = result.end_detail;
+    CaseScore score = score_case(c, parameters, finished_fitness, stop_threshold, result, stopped);
     if (stopped) {
-      score.fitness = score.squared_error_rad2 / t_max_power;
       out.fitness = finished_fitness + score.fitness;
       out.stopped_early = true;
       out.cases.push_back(std::move(score));
       if (rollouts != nullptr) rollouts->push_back(std::move(result));
       return out;
-    }
-    if (result.end == RolloutEnd::kModelError || result.end == RolloutEnd::kDiverged ||
-        score.frames == 0) {
-      // Failure is a score: the worst one.
-      score.fitness = std::numeric_limits<double>::infinity();
-    } else {
-      score.fitness =
-          score.squared_error_rad2 / std::pow(static_cast<double>(score.frames), options_.m);
     }
     finished_fitness += score.fitness;
     out.cases.push_back(std::move(score));

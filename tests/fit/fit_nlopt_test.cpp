@@ -1,5 +1,6 @@
-// NLopt's global algorithms as fit strategies: they run to the fit's evaluation budget, which
-// is therefore required.
+// NLopt's algorithms as fit strategies: the global ones run to the fit's evaluation budget,
+// which is therefore required; a serial algorithm's point is evaluated on several threads
+// without changing the run.
 
 #include <gtest/gtest.h>
 
@@ -33,6 +34,23 @@ TEST(FitNlopt, GlobalAlgorithmsRunToTheEvaluationBudget) {
     const std::string csv = read_text(dir / "run" / "generations.csv");
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 31) << algorithm;
   }
+}
+
+// NLopt asks for one point at a time; with two threads the fit simulates that point's logs in
+// parallel instead (the training folder has two), and the run is the same, bit for bit.
+TEST(FitNlopt, OneAndTwoThreadsGiveIdenticalRuns) {
+  const fs::path dir = fresh_dir("fit_nlopt_threads");
+  const std::string fit =
+      write_pendulum_fit(dir, kHiddenNone, "{kind: nlopt, algorithm: bobyqa}", "{evaluations: 40}");
+  FitOverrides one, two;
+  one.threads = 1;
+  one.out = (dir / "one").string();
+  two.threads = 2;
+  two.out = (dir / "two").string();
+  ASSERT_EQ(run_fit(load_fit_config(fit, one), false), 0);
+  ASSERT_EQ(run_fit(load_fit_config(fit, two), false), 0);
+  EXPECT_EQ(generations_without_seconds(dir / "one"), generations_without_seconds(dir / "two"));
+  EXPECT_EQ(best_without_date(dir / "one"), best_without_date(dir / "two"));
 }
 
 TEST(FitNlopt, AGlobalAlgorithmWithoutAnEvaluationBudgetIsBadInput) {

@@ -38,7 +38,8 @@ class SerialEvaluator final : public Evaluator {
 // One individual per Problem::evaluate_batch call, spread over `threads` OpenMP threads with
 // dynamic scheduling (rollouts that stop early free their thread at once). The problem must
 // allow concurrent calls (see Problem::evaluate_batch). threads <= 0 means OpenMP's default
-// (omp_get_max_threads()).
+// (omp_get_max_threads()). A batch of one individual is evaluated in the calling thread with
+// every thread handed to the problem (EvaluationContext::spare_threads).
 class OpenMpEvaluator final : public Evaluator {
  public:
   explicit OpenMpEvaluator(int threads);

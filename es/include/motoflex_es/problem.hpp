@@ -49,6 +49,11 @@ struct EvaluationContext {
   // statistics of the rejected individuals (mean or median fitness of a batch) change.
   // +inf (the default) means never stop early. NaN is never passed.
   double stop_threshold = std::numeric_limits<double>::infinity();
+  // Threads this call may use for its own work: an evaluator with more threads than the batch
+  // has individuals (NLopt asks for one point at a time) hands them down, and a problem made
+  // of independent parts (the logs of a fit) can evaluate those in parallel. Results must not
+  // depend on it.
+  int spare_threads = 1;
 };
 
 // An optimisation problem: minimise fitness(x) for x within bounds(). The optimiser knows

@@ -73,9 +73,11 @@ class FitnessFunction {
   // Σ_cases (error so far)/T_max^m — a lower bound of the final fitness, since errors only grow
   // and T <= T_max — reaches it; the result is then that bound (>= the threshold), which ranks
   // exactly as the full value would against anything below the threshold.
+  // Without a threshold, `threads` > 1 simulates the cases in parallel (OpenMP; call it
+  // outside any parallel region); the result is the same, bit for bit.
   FitnessBreakdown evaluate(const ParameterSet& parameters,
                             double stop_threshold = std::numeric_limits<double>::infinity(),
-                            std::vector<RolloutResult>* rollouts = nullptr) const;
+                            std::vector<RolloutResult>* rollouts = nullptr, int threads = 1) const;
 
   const RobotModel& model() const { return *model_; }
   const std::vector<FitCase>& cases() const { return cases_; }
@@ -94,6 +96,11 @@ class FitnessFunction {
   std::string channel_name(std::size_t channel) const;
 
  private:
+  // Simulates and scores case c. The rollout stops early once finished_fitness (of the cases
+  // before it) plus its own lower bound reaches stop_threshold; `stopped` says so.
+  CaseScore score_case(std::size_t c, const ParameterSet& parameters, double finished_fitness,
+                       double stop_threshold, RolloutResult& result, bool& stopped) const;
+
   std::shared_ptr<const RobotModel> model_;
   std::vector<FitCase> cases_;
   FitnessOptions options_;
