@@ -53,6 +53,17 @@ RolloutResult run_rollout(const RobotModel& model, const ParameterSet& parameter
     return result;
   }
 
+  // Every frame's record is sized here, so the stepping loop below never reallocates.
+  const std::size_t frames = commands.frames();
+  result.time_s.reserve(frames);
+  result.commanded_rad.reserve(frames * n);
+  result.measured_rad.reserve(frames * n);
+  if (options.record_torques) result.joint_torque_nm.reserve(frames * n);
+  result.imu_roll_rad.reserve(frames);
+  result.imu_pitch_rad.reserve(frames);
+  result.torso_position_m.reserve(3 * frames);
+  result.foot_force_z_n.reserve(rollout->foot_count() * frames);
+
   // Settle on the first commanded pose so the servos reach a steady state before t = 0.
   const auto settle_steps = static_cast<std::size_t>(std::llround(options.settle_s / options.dt_s));
   for (std::size_t k = 0; k < settle_steps; ++k) {
