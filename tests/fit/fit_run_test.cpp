@@ -56,15 +56,7 @@ TEST(FitRun, OneAndTwoThreadsGiveIdenticalRuns) {
   const fs::path dir = fresh_dir("fit_threads");
   record_pendulum_log(dir / "data", "sin_sin");
   const std::string fit = write_pendulum_fit(dir, dir / "data", kSmallEs, "{generations: 6}");
-  FitOverrides one, two;
-  one.threads = 1;
-  one.out = (dir / "one").string();
-  two.threads = 2;
-  two.out = (dir / "two").string();
-  ASSERT_EQ(run_fit(load_fit_config(fit, one), false), 0);
-  ASSERT_EQ(run_fit(load_fit_config(fit, two), false), 0);
-  EXPECT_EQ(generations_without_seconds(dir / "one"), generations_without_seconds(dir / "two"));
-  EXPECT_EQ(best_without_date(dir / "one"), best_without_date(dir / "two"));
+  expect_one_and_two_threads_identical(fit, dir);
 }
 
 TEST(FitRun, ResumedRunEqualsAnUninterruptedOne) {

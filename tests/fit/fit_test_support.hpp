@@ -8,6 +8,10 @@
 #include <map>
 #include <string>
 
+#include <gtest/gtest.h>
+
+#include "motoflex/fit/fit_config.hpp"
+#include "motoflex/fit/fit_runner.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/io/rollout_log.hpp"
 #include "motoflex/io/scenario.hpp"
@@ -87,6 +91,21 @@ inline std::string best_without_date(const std::filesystem::path& run_dir) {
   const auto at = text.find("\"date\"");
   if (at != std::string::npos) text.erase(at, text.find('\n', at) - at);
   return text;
+}
+
+// Runs the fit at `fit` with 1 and with 2 threads into dir/one and dir/two and expects the
+// same generations (without seconds) and the same best.json (without its date).
+inline void expect_one_and_two_threads_identical(const std::string& fit,
+                                                 const std::filesystem::path& dir) {
+  FitOverrides one, two;
+  one.threads = 1;
+  one.out = (dir / "one").string();
+  two.threads = 2;
+  two.out = (dir / "two").string();
+  ASSERT_EQ(run_fit(load_fit_config(fit, one), false), 0);
+  ASSERT_EQ(run_fit(load_fit_config(fit, two), false), 0);
+  EXPECT_EQ(generations_without_seconds(dir / "one"), generations_without_seconds(dir / "two"));
+  EXPECT_EQ(best_without_date(dir / "one"), best_without_date(dir / "two"));
 }
 
 }  // namespace motoflex::testing
