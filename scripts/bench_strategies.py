@@ -17,10 +17,11 @@ every strategy, defaults to 810 evaluations: the paper's ES's 10 initial parents
 generation of 800 offspring (1 % of its 80 000). Last, the goal table: the reference method on
 two more seeds, and the evaluations each needed to reach the target.
 
-    scripts/bench_strategies.py                  # default: about 4 hours on 2 cores
+    scripts/bench_strategies.py                  # default: 5-6 hours on 2 cores
     scripts/bench_strategies.py --quick          # ~10 min smoke version (1 seed, tiny budget)
     scripts/bench_strategies.py --target 1.2e-6  # skip the reference fit (and the goal table)
     scripts/bench_strategies.py --skip-strategies --skip-parallel   # only what is missing
+    scripts/bench_strategies.py --strategies cma_es isres           # two strategies now
 
 How runs are scheduled: every strategy run uses one thread and `--jobs` (default 2) runs go at
 once, so each run gets one core whatever its strategy (NLopt's algorithms evaluate one point at
@@ -29,10 +30,15 @@ killed as soon as its best fitness has reached the target and that generation's 
 written (its counts are read from the checkpoint), or it ends at the evaluation budget, which is
 the same for every strategy. The parallel-efficiency runs go one at a time.
 
-Writes into --out: report.md (the tables), results.json (every run), configs/ (the derived fit
-configs) and runs/ (each run's folder, the reference fit's too; a finished reference or goal run
-is reused). With --skip-strategies/--skip-parallel/--skip-goal, that part of the report comes
-from the previous results.json of the same target.
+Writes into --out (default benchmarks/strategies/): report.md (the tables), results.json (every
+run), configs/ (the derived fit configs) and runs/ (each run's folder, the reference fit's too; a
+finished reference or goal run is reused). Git keeps report.md, results.json, the stored run
+results and each run's summary.json and generations.csv, and ignores the rest, so a benchmark
+that needs more than one sitting can be committed and continued from a fresh clone. Each finished strategy run leaves runs/<strategy>_seed<s>.result.json, and a later
+invocation with the same budget and target reuses it, so a killed benchmark loses only the runs
+under way and `--strategies` can fill the table one strategy at a time. With
+--skip-strategies/--skip-parallel/--skip-goal, that part of the report comes from the previous
+results.json of the same target.
 """
 
 import argparse
@@ -177,8 +183,9 @@ class Run:
         return self.process.returncode == 0 and (self.run_dir / "summary.json").exists()
 
 
-def run_pool(runs_to_start, jobs):
-    """Starts callables returning Run, `jobs` at a time; returns the finished Runs in order."""
+def run_pool(runs_to_start, jobs, on_finish=None):
+    """Starts callables returning Run, `jobs` at a time, calls on_finish(run) as each ends;
+    returns the Runs in the order they ended."""
     pending, active, done = list(runs_to_start), [], []
     while pending or active:
         while pending and len(active) < jobs:
@@ -195,6 +202,8 @@ def run_pool(runs_to_start, jobs):
                 print(f"  finished {run.name} ({run.wall_s:.0f} s, {how})", flush=True)
                 if not run.succeeded():
                     print(f"  {run.name} FAILED, see {run.log.name}", flush=True)
+                if on_finish is not None:
+                    on_finish(run)
     return done
 
 
@@ -250,12 +259,17 @@ def reference_method_run(args, out, bench_config, seed, name):
         if summary.get("stop_reason") != "interrupted":
             print(f"{name}: reusing {run_dir}", flush=True)
             return summary, run_dir
-    print(f"{name}: IPOP-CMA-ES {args.reference_evaluations} + BOBYQA {args.reference_polish} "
-          f"evaluations, seed {seed} -> {run_dir}", flush=True)
-    if run_dir.exists():
-        shutil.rmtree(run_dir)
-    subprocess.run([str(args.binary), "fit", str(config_path), "--out", str(run_dir)], check=True,
-                   stdout=subprocess.DEVNULL)
+    if (run_dir / "checkpoint.json").exists():
+        # Stopped half-way (killed, or interrupted): resume gives the bits of an unbroken run.
+        print(f"{name}: resuming {run_dir}", flush=True)
+        command = [str(args.binary), "resume", str(run_dir)]
+    else:
+        print(f"{name}: IPOP-CMA-ES {args.reference_evaluations} + BOBYQA "
+              f"{args.reference_polish} evaluations, seed {seed} -> {run_dir}", flush=True)
+        if run_dir.exists():
+            shutil.rmtree(run_dir)
+        command = [str(args.binary), "fit", str(config_path), "--out", str(run_dir)]
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     return json.loads(summary_path.read_text()), run_dir
 
 
@@ -286,25 +300,57 @@ def run_goal(args, out, bench_config):
     return rows
 
 
+def stored_result(path, budget, target):
+    """A finished run's result from an earlier invocation, if it was measured with this budget
+    and target (a run stopped half-way stored nothing and runs again from its start)."""
+    if not path.exists():
+        return None
+    result = json.loads(path.read_text())
+    if result.get("budget") != budget or result.get("target") != target or result.get("failed"):
+        return None
+    return result
+
+
 def run_strategies(args, out, bench_config):
-    runs = []
+    """Every (strategy, seed) run: a run finished by an earlier invocation with the same budget
+    and target is reused from its stored result; of the others, only the strategies named by
+    --strategies (default: all) run now. A killed benchmark therefore loses only the runs that
+    were under way."""
     table = strategies(args)
-    for key, label, node in table:
+    selected = set(args.strategies or [key for key, _, _ in table])
+    unknown = selected - {key for key, _, _ in table}
+    if unknown:
+        sys.exit(f"bench_strategies: unknown --strategies {', '.join(sorted(unknown))} "
+                 f"(known: {', '.join(key for key, _, _ in table)})")
+    stored, to_run = {}, []
+    for key, _, node in table:
         config_path = out / "configs" / f"{key}.yaml"
         write_config(config_path, derived_config(bench_config, node, args.budget, 1, args.seeds[0]))
         for seed in args.seeds:
             run_dir = out / "runs" / f"{key}_seed{seed}"
-            command = [str(args.binary), "fit", str(config_path), "--out", str(run_dir),
-                       "--seed", str(seed), "--threads", "1"]
-            runs.append((key, seed, lambda c=command, d=run_dir, n=f"{key} seed {seed}":
-                         Run(n, c, d, args.target)))
-    finished = run_pool([make for _, _, make in runs], args.jobs)
-    by_name = {run.name: run for run in finished}
-    results = []
-    for key, seed, _ in runs:
-        node = next(n for k, _, n in table if k == key)
-        results.append(run_result(by_name[f"{key} seed {seed}"], key, seed, args.budget,
-                                  args.target, "polish" in node))
+            result_path = run_dir.parent / (run_dir.name + ".result.json")
+            previous = stored_result(result_path, args.budget, args.target)
+            if previous is not None:
+                print(f"  reusing {key} seed {seed} ({result_path})", flush=True)
+                stored[(key, seed)] = previous
+            elif key in selected:
+                command = [str(args.binary), "fit", str(config_path), "--out", str(run_dir),
+                           "--seed", str(seed), "--threads", "1"]
+                to_run.append((key, seed, node, result_path,
+                               lambda c=command, d=run_dir, n=f"{key} seed {seed}":
+                               Run(n, c, d, args.target)))
+    by_name = {f"{key} seed {seed}": (key, seed, node, path) for key, seed, node, path, _ in to_run}
+
+    def store(run):  # at once, so that a benchmark killed later keeps this run
+        key, seed, node, result_path = by_name[run.name]
+        result = run_result(run, key, seed, args.budget, args.target, "polish" in node)
+        result["target"] = args.target
+        result_path.write_text(json.dumps(result, indent=2) + "\n")
+        stored[(key, seed)] = result
+
+    run_pool([make for *_, make in to_run], args.jobs, store)
+    results = [stored[(key, seed)] for key, _, _ in table for seed in args.seeds
+               if (key, seed) in stored]
     return table, results
 
 
@@ -516,7 +562,10 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--binary", default=str(ROOT / "build" / "motoflex"))
     parser.add_argument("--config", default=str(ROOT / "scenarios/fit/nao_strategy_bench.yaml"))
-    parser.add_argument("--out", default=str(ROOT / "runs" / "bench_strategies"))
+    parser.add_argument("--out", default=str(ROOT / "benchmarks" / "strategies"),
+                        help="default benchmarks/strategies: git keeps its report, results and each "
+                             "finished run's result, summary.json and generations.csv (see "
+                             ".gitignore), so the benchmark can be continued from a fresh clone")
     parser.add_argument("--quick", action="store_true", help="~10 minute smoke version")
     parser.add_argument("--seeds", type=int, nargs="+", help="default 1 2 3 (quick: 1)")
     parser.add_argument("--budget", type=int, help="evaluations per run (default 810, quick 16)")
@@ -535,6 +584,9 @@ def main():
                         help="share of the budget CMA-ES + BOBYQA leaves to the polish")
     parser.add_argument("--parallel-generations", type=int,
                         help="generations of the efficiency workload (default 2, quick 1)")
+    parser.add_argument("--strategies", nargs="+", metavar="KEY",
+                        help="run only these strategies (es_paper es_small cma_es cma_es_bobyqa "
+                             "crs2_lm isres); finished runs of the others are still reported")
     parser.add_argument("--skip-strategies", action="store_true")
     parser.add_argument("--skip-parallel", action="store_true")
     parser.add_argument("--goal-seeds", type=int, nargs="*",
