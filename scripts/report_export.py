@@ -21,6 +21,8 @@ import statistics
 import subprocess
 import sys
 
+from report_files import write_report
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -98,11 +100,7 @@ def main():
         lines.append(f"| {r['model']} | {r['rms_deg']:.4f} | {worst[1]:.4f} ({worst[0]}) | "
                      f"{r['mujoco_steps_per_s']:.0f} | {r['motoflex_steps_per_s']:.0f} | "
                      f"{r['mujoco_over_motoflex']:.2f} |")
-    with open(os.path.join(args.out, "export_report.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    with open(os.path.join(args.out, "export_report.json"), "w") as f:
-        json.dump(rows, f, indent=2)
-    print("\n".join(lines))
+    write_report(args.out, "export_report", lines, rows)
 
 
 if __name__ == "__main__":

@@ -15,6 +15,8 @@ import subprocess
 import sys
 import time
 
+from report_files import write_report
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCH_EFFECTS = ["none", "encoder_offset", "sensor_delay", "stribeck", "load_friction",
                  "resistance_drift"]
@@ -112,11 +114,7 @@ def main():
             r["data"], r["ranked_first"], " + ".join(r["added"]) or "nothing",
             r["val_rms_before_deg"], r["val_rms_after_deg"], change, r["val_mae_before_mrad"],
             r["val_mae_after_mrad"], r["evaluations"], r["probe_rollouts"], r["wall_seconds"]))
-    with open(os.path.join(args.out, "loop_report.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    with open(os.path.join(args.out, "loop_report.json"), "w") as f:
-        json.dump(rows, f, indent=2)
-    print("\n".join(lines))
+    write_report(args.out, "loop_report", lines, rows)
 
 
 if __name__ == "__main__":
