@@ -32,13 +32,15 @@ killed as soon as its best fitness has reached the target and that generation's 
 written (its counts are read from the checkpoint), or it ends at the evaluation budget, which is
 the same for every strategy. The parallel-efficiency runs go one at a time.
 
-Writes into --out (default benchmarks/strategies/): report.md (the tables), results.json (every
-run), configs/ (the derived fit configs) and runs/ (each run's folder, the reference fit's too; a
-finished reference or goal run is reused). Git keeps report.md, results.json, the stored run
-results and each run's summary.json and generations.csv, and ignores the rest, so a benchmark
-that needs more than one sitting can be committed and continued from a fresh clone. Each finished strategy run leaves runs/<strategy>_seed<s>.result.json, and a later
-invocation with the same budget and target reuses it, so a killed benchmark loses only the runs
-under way and `--strategies` can fill the table one strategy at a time. With
+Writes into --out (default benchmarks/strategies/): report.md (the tables) and results.json
+(every run), rewritten after every part and every goal seed; configs/ (the derived fit configs);
+runs/ (each run's folder). Git keeps all but the plots and logs (run dirs keep summary.json,
+generations.csv, checkpoint.json and run.json), so a benchmark that needs more than one sitting
+can be committed and continued from a clone: a finished reference or goal run is reused and an
+interrupted one resumes from its checkpoint; each finished strategy run leaves
+runs/<strategy>_seed<s>.result.json, reused by any later invocation with the same budget and
+target (a strategy run under way when the benchmark was killed starts over, to keep its wall
+time honest), and `--strategies` fills the table one strategy at a time. With
 --skip-strategies/--skip-parallel/--skip-goal, that part of the report comes from the previous
 results.json of the same target.
 """
@@ -298,14 +300,16 @@ def reference_goal_row(args, out, bench_config):
     return row
 
 
-def run_goal(args, out, bench_config):
+def run_goal(args, out, bench_config, rows, after_each):
     """The issue's goal, a method that reaches the paper setup's final fitness with at most a
     tenth of its 80 000 evaluations: the reference method (IPOP-CMA-ES on all cores) on more
     seeds, each with that tenth as its budget and stopped as soon as it reaches the target; the
     reference run is the first row. A seed caught in a local optimum restarts with growing
     populations until the budget is spent (up to ~3 h per seed on 2 cores), so each finished
-    seed is stored and reused, and an interrupted one resumes from its checkpoint."""
-    rows = [reference_goal_row(args, out, bench_config)]
+    seed is stored and reused, and an interrupted one resumes from its checkpoint. Appends to
+    `rows` and calls after_each() once per row."""
+    rows.append(reference_goal_row(args, out, bench_config))
+    after_each()
     node = {"kind": "cma_es", "sigma": 0.25, "restarts": 20}
     budget = args.goal_evaluations
     config_path = out / "configs" / f"goal_budget{budget}.yaml"
@@ -333,7 +337,7 @@ def run_goal(args, out, bench_config):
                      "reached": result["reached"],
                      "evaluations_to_target": result["evaluations_to_target"],
                      "to_target_is_upper_bound": False})
-    return rows
+        after_each()
 
 
 def stored_result(path, budget, target):
@@ -671,30 +675,38 @@ def main():
         parallel = previous.get("parallel", [])
     if args.skip_goal:
         goal = previous.get("goal", [])
+    def write_outputs():
+        """report.md and results.json of everything so far: after every part, so that a
+        benchmark killed during a long part keeps the parts before it."""
+        summary_rows = summarise(table, results, args) if results else []
+        args.below_reference = [r for r in results if not r.get("failed") and args.reference
+                                and r["best_fitness"] < args.reference["best_fitness"]]
+        now = time.time()
+        report = markdown(args, summary_rows, parallel, goal, started, now,
+                          (load_start, os.getloadavg()[0]))
+        (out / "report.md").write_text(report)
+        (out / "results.json").write_text(json.dumps(
+            {"target": args.target, "tolerance": args.tolerance,
+             "reference": args.reference, "budget": args.budget, "seeds": args.seeds,
+             "summary": summary_rows, "runs": results,
+             "parallel": [{k: v for k, v in r.items() if k != "fingerprint"} for r in parallel],
+             "goal": goal,
+             "seconds": now - started}, indent=2) + "\n")
+        return report
+
     if not args.skip_strategies:
         print(f"strategies: {len(table)} x seeds {args.seeds}, budget {args.budget}, "
               f"target {args.target:g}", flush=True)
         table, results = run_strategies(args, out, bench_config)
+        write_outputs()
     if not args.skip_parallel:
         print(f"parallel efficiency: {args.parallel_generations} generations", flush=True)
         parallel = run_parallel(args, out, bench_config)
+        write_outputs()
     if not args.skip_goal and args.reference is not None:
-        goal = run_goal(args, out, bench_config)
-    finished = time.time()
-    summary_rows = summarise(table, results, args) if results else []
-    args.below_reference = [r for r in results if not r.get("failed") and args.reference
-                            and r["best_fitness"] < args.reference["best_fitness"]]
-    report = markdown(args, summary_rows, parallel, goal, started, finished,
-                      (load_start, os.getloadavg()[0]))
-    (out / "report.md").write_text(report)
-    (out / "results.json").write_text(json.dumps(
-        {"target": args.target, "tolerance": args.tolerance,
-         "reference": args.reference, "budget": args.budget, "seeds": args.seeds,
-         "summary": summary_rows, "runs": results,
-         "parallel": [{k: v for k, v in r.items() if k != "fingerprint"} for r in parallel],
-         "goal": goal,
-         "seconds": finished - started}, indent=2) + "\n")
-    print(report)
+        goal = []
+        run_goal(args, out, bench_config, goal, write_outputs)
+    print(write_outputs())
 
 
 if __name__ == "__main__":
