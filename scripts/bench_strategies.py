@@ -19,7 +19,7 @@ generation of 800 offspring (1 % of its 80 000). Last, the goal table: the refer
 IPOP-CMA-ES on two more seeds, each with the goal's budget (8 000 evaluations, a tenth of the
 paper's) and stopped at the target, and the evaluations each needed.
 
-    scripts/bench_strategies.py                  # default: 5-6 hours on 2 cores
+    scripts/bench_strategies.py                  # default: 5-10 hours on 2 cores, resumable
     scripts/bench_strategies.py --quick          # ~10 min smoke version (1 seed, tiny budget)
     scripts/bench_strategies.py --target 1.2e-6  # skip the reference fit (and the goal table)
     scripts/bench_strategies.py --skip-strategies --skip-parallel   # only what is missing
