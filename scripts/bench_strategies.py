@@ -36,7 +36,8 @@ Writes into --out (default benchmarks/strategies/): report.md (the tables) and r
 (every run), rewritten after every part and every goal seed; configs/ (the derived fit configs);
 runs/ (each run's folder). Git keeps all but the plots and logs (run dirs keep summary.json,
 generations.csv, checkpoint.json and run.json), so a benchmark that needs more than one sitting
-can be committed and continued from a clone: a finished reference or goal run is reused and an
+can be committed and continued from a clone in the same folder (run.json and the configs name
+absolute paths): a finished reference or goal run is reused and an
 interrupted one resumes from its checkpoint; each finished strategy run leaves
 runs/<strategy>_seed<s>.result.json, reused by any later invocation with the same budget and
 target (a strategy run under way when the benchmark was killed starts over, to keep its wall
@@ -247,47 +248,50 @@ def run_result(run, strategy_key, seed, budget, target, polish):
     return result
 
 
-def reference_method_run(args, out, bench_config, seed, name):
-    """One run of the reference method (IPOP-CMA-ES, then a BOBYQA polish) on all cores:
-    its summary and run dir. A finished run is reused."""
-    node = {"kind": "cma_es", "sigma": 0.25, "restarts": 9, "polish": "bobyqa",
-            "polish_evaluations": args.reference_polish}
-    config = derived_config(bench_config, node, args.reference_evaluations + args.reference_polish,
-                            os.cpu_count() or 1, seed)
-    config_path = out / "configs" / f"{name}.yaml"
-    write_config(config_path, config)
-    run_dir = out / "runs" / name
-    summary_path = run_dir / "summary.json"
-    if summary_path.exists():
-        summary = json.loads(summary_path.read_text())
-        if summary.get("stop_reason") != "interrupted":
-            print(f"{name}: reusing {run_dir}", flush=True)
-            return summary, run_dir
+def fit_or_resume(args, config_path, run_dir, seed):
+    """(command, resuming): `motoflex resume` for a run dir left half-way (killed or
+    interrupted; resume gives the bits of an unbroken run), else a fresh `motoflex fit`."""
     if (run_dir / "checkpoint.json").exists():
-        # Stopped half-way (killed, or interrupted): resume gives the bits of an unbroken run.
-        print(f"{name}: resuming {run_dir}", flush=True)
-        command = [str(args.binary), "resume", str(run_dir)]
-    else:
-        print(f"{name}: IPOP-CMA-ES {args.reference_evaluations} + BOBYQA "
-              f"{args.reference_polish} evaluations, seed {seed} -> {run_dir}", flush=True)
-        if run_dir.exists():
-            shutil.rmtree(run_dir)
-        command = [str(args.binary), "fit", str(config_path), "--out", str(run_dir)]
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-    return json.loads(summary_path.read_text()), run_dir
+        return [str(args.binary), "resume", str(run_dir)], True
+    return [str(args.binary), "fit", str(config_path), "--out", str(run_dir),
+            "--seed", str(seed)], False
 
 
 def run_reference(args, out, bench_config):
     """F*: the best fitness of a long IPOP-CMA-ES run (restarts with growing populations: the
     friction terms make the landscape multi-modal, and one CMA-ES run without restarts settles
-    in a local optimum four times as high) polished by BOBYQA, on all cores."""
-    return reference_method_run(args, out, bench_config, 1001, "reference")[0]
+    in a local optimum four times as high) polished by BOBYQA, on all cores. Returns its
+    summary and run dir; a finished run is reused, a half-finished one resumed."""
+    seed = 1001
+    node = {"kind": "cma_es", "sigma": 0.25, "restarts": 9, "polish": "bobyqa",
+            "polish_evaluations": args.reference_polish}
+    config = derived_config(bench_config, node, args.reference_evaluations + args.reference_polish,
+                            os.cpu_count() or 1, seed)
+    config_path = out / "configs" / "reference.yaml"
+    write_config(config_path, config)
+    run_dir = out / "runs" / "reference"
+    summary_path = run_dir / "summary.json"
+    if summary_path.exists():
+        summary = json.loads(summary_path.read_text())
+        if summary.get("stop_reason") != "interrupted":
+            print(f"reference: reusing {run_dir}", flush=True)
+            return summary, run_dir
+    command, resuming = fit_or_resume(args, config_path, run_dir, seed)
+    if resuming:
+        print(f"reference: resuming {run_dir}", flush=True)
+    else:
+        print(f"reference: IPOP-CMA-ES {args.reference_evaluations} + BOBYQA "
+              f"{args.reference_polish} evaluations, seed {seed} -> {run_dir}", flush=True)
+        if run_dir.exists():
+            shutil.rmtree(run_dir)
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+    return json.loads(summary_path.read_text()), run_dir
 
 
-def reference_goal_row(args, out, bench_config):
+def reference_goal_row(args):
     """The reference run as the goal table's first row (its budget is the reference's)."""
-    summary, run_dir = reference_method_run(args, out, bench_config, 1001, "reference")
-    reach = first_reach(read_generations(run_dir), args.target)
+    summary = args.reference
+    reach = first_reach(read_generations(args.reference_dir), args.target)
     row = {"seed": 1001, "budget": args.reference_evaluations + args.reference_polish,
            "best_fitness": summary["best_fitness"], "evaluations": summary["evaluations"],
            "seconds": summary["seconds"],
@@ -308,7 +312,7 @@ def run_goal(args, out, bench_config, rows, after_each):
     populations until the budget is spent (up to ~3 h per seed on 2 cores), so each finished
     seed is stored and reused, and an interrupted one resumes from its checkpoint. Appends to
     `rows` and calls after_each() once per row."""
-    rows.append(reference_goal_row(args, out, bench_config))
+    rows.append(reference_goal_row(args))
     after_each()
     node = {"kind": "cma_es", "sigma": 0.25, "restarts": 20}
     budget = args.goal_evaluations
@@ -320,10 +324,7 @@ def run_goal(args, out, bench_config, rows, after_each):
         if result is None:
             write_config(config_path, derived_config(bench_config, node, budget,
                                                      os.cpu_count() or 1, seed))
-            resume = (run_dir / "checkpoint.json").exists()
-            command = ([str(args.binary), "resume", str(run_dir)] if resume else
-                       [str(args.binary), "fit", str(config_path), "--out", str(run_dir),
-                        "--seed", str(seed)])
+            command, resume = fit_or_resume(args, config_path, run_dir, seed)
             name = f"goal seed {seed}"
             run = run_pool([lambda: Run(name, command, run_dir, args.target, fresh=not resume)],
                            1)[0]
@@ -607,9 +608,9 @@ def main():
     parser.add_argument("--binary", default=str(ROOT / "build" / "motoflex"))
     parser.add_argument("--config", default=str(ROOT / "scenarios/fit/nao_strategy_bench.yaml"))
     parser.add_argument("--out", default=str(ROOT / "benchmarks" / "strategies"),
-                        help="default benchmarks/strategies: git keeps its report, results and each "
-                             "finished run's result, summary.json and generations.csv (see "
-                             ".gitignore), so the benchmark can be continued from a fresh clone")
+                        help="default benchmarks/strategies: git keeps its report, results, "
+                             "configs and each run's small files (see .gitignore), so the "
+                             "benchmark can be continued from a clone in the same folder")
     parser.add_argument("--quick", action="store_true", help="~10 minute smoke version")
     parser.add_argument("--seeds", type=int, nargs="+", help="default 1 2 3 (quick: 1)")
     parser.add_argument("--budget", type=int, help="evaluations per run (default 810, quick 16)")
@@ -660,9 +661,9 @@ def main():
 
     started = time.time()
     load_start = os.getloadavg()[0]
-    args.reference = None
+    args.reference, args.reference_dir = None, None
     if args.target is None:
-        args.reference = run_reference(args, out, bench_config)
+        args.reference, args.reference_dir = run_reference(args, out, bench_config)
         args.target = args.reference["best_fitness"] * (1.0 + args.tolerance)
     table, results, parallel, goal = strategies(args), [], [], []
     previous_path = out / "results.json"
@@ -675,6 +676,7 @@ def main():
         parallel = previous.get("parallel", [])
     if args.skip_goal:
         goal = previous.get("goal", [])
+
     def write_outputs():
         """report.md and results.json of everything so far: after every part, so that a
         benchmark killed during a long part keeps the parts before it."""
