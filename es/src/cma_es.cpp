@@ -223,6 +223,20 @@ StopReason CmaEs::run_stop_reason(const std::vector<double>& fitness,
     }
   }
 
+  if (options_.tol_stall_relative > 0.0) {
+    const std::size_t stall = options_.stall_generations > 0
+                                  ? static_cast<std::size_t>(options_.stall_generations)
+                                  : 20 + static_cast<std::size_t>(std::ceil(60.0 * nd / lambda_d));
+    if (best_history_.size() > stall) {
+      const auto split = best_history_.end() - static_cast<std::ptrdiff_t>(stall);
+      const double before = *std::min_element(best_history_.begin(), split);
+      const double now = std::min(before, *std::min_element(split, best_history_.end()));
+      if (std::isfinite(before) && before - now <= options_.tol_stall_relative * std::abs(before)) {
+        return StopReason::kTolStall;
+      }
+    }
+  }
+
   if (options_.check_stagnation) {
     const double minimum_window = 120.0 + 30.0 * nd / lambda_d;
     const std::size_t window = static_cast<std::size_t>(std::min<double>(

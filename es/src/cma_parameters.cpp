@@ -23,6 +23,7 @@ bool CmaEsOptions::is_valid(std::string* why) const {
   if (std::isnan(target_fitness)) return fail("target_fitness must not be NaN");
   if (!(tol_fun >= 0.0)) return fail("tol_fun must be >= 0");
   if (!(tol_x >= 0.0)) return fail("tol_x must be >= 0");
+  if (!(tol_stall_relative >= 0.0)) return fail("tol_stall_relative must be >= 0");
   if (!(max_condition > 1.0)) return fail("max_condition must be > 1");
   return true;
 }

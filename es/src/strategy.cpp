@@ -25,6 +25,7 @@ constexpr StopReasonName kStopReasonNames[] = {
     {StopReason::kEvaluationBudget, "evaluation_budget"},
     {StopReason::kOptimizerConverged, "optimizer_converged"},
     {StopReason::kOptimizerFailed, "optimizer_failed"},
+    {StopReason::kTolStall, "tol_stall"},
 };
 
 }  // namespace

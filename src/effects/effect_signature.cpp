@@ -113,7 +113,9 @@ std::shared_ptr<const FitnessFunction> variant_fitness(const FitConfig& config,
     return nullptr;
   }
   return std::make_shared<const FitnessFunction>(
-      scenario.model, load_fit_cases(scenario, config.train_logs, config.fitness.imu_weight > 0.0),
+      scenario.model,
+      load_fit_cases(scenario, config.train_logs, config.fitness.imu_weight > 0.0,
+                     config.fitness.window_s),
       config.fitness);
 }
 

@@ -224,7 +224,8 @@ std::vector<std::string> list_logs(const std::string& folder_or_file, const std:
 }
 
 std::vector<FitCase> load_fit_cases(const Scenario& scenario,
-                                    const std::vector<std::string>& log_paths, bool need_imu) {
+                                    const std::vector<std::string>& log_paths, bool need_imu,
+                                    double window_s) {
   const RobotModel& model = *scenario.model;
   const std::size_t n = model.actuators.size();
   std::vector<FitCase> cases;
@@ -252,19 +253,32 @@ std::vector<FitCase> load_fit_cases(const Scenario& scenario,
     }
     FitCase fit_case;
     fit_case.name = fs::path(path).stem().string();
-    std::vector<double> commanded(log.frames() * n), measured(log.frames() * n);
+    std::size_t frames = log.frames();
+    if (window_s > 0.0) {
+      frames = 0;
+      while (frames < log.frames() && log.time_s[frames] - log.time_s[0] <= window_s + 1e-9) {
+        ++frames;
+      }
+      if (frames < 2) {
+        throw InputError(path, 0, "fitness.window_s",
+                         "window of " + std::to_string(window_s) + " s keeps fewer than 2 frames");
+      }
+    }
+    std::vector<double> time_s(log.time_s.begin(),
+                               log.time_s.begin() + static_cast<std::ptrdiff_t>(frames));
+    std::vector<double> commanded(frames * n), measured(frames * n);
     for (std::size_t j = 0; j < n; ++j) {
       const std::size_t column = *log.joint_index(model.actuators[j].name);
-      for (std::size_t f = 0; f < log.frames(); ++f) {
+      for (std::size_t f = 0; f < frames; ++f) {
         commanded[f * n + j] = log.commanded(f, column);
         measured[f * n + j] = log.measured(f, column);
       }
     }
-    fit_case.commands = CommandTrajectory(log.time_s, std::move(commanded), n);
+    fit_case.commands = CommandTrajectory(std::move(time_s), std::move(commanded), n);
     fit_case.measured_rad = std::move(measured);
     if (!log.imu_roll_rad.empty() && !log.imu_pitch_rad.empty()) {
-      fit_case.measured_imu_rad.resize(2 * log.frames());
-      for (std::size_t f = 0; f < log.frames(); ++f) {
+      fit_case.measured_imu_rad.resize(2 * frames);
+      for (std::size_t f = 0; f < frames; ++f) {
         fit_case.measured_imu_rad[2 * f] = log.imu_roll_rad[f];
         fit_case.measured_imu_rad[2 * f + 1] = log.imu_pitch_rad[f];
       }
@@ -430,13 +444,16 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
   }
 
   if (const auto fitness = root.find("fitness")) {
-    fitness->require_keys_within({"m", "settle_s", "weights", "imu_weight", "early_termination"});
+    fitness->require_keys_within(
+        {"m", "settle_s", "weights", "imu_weight", "window_s", "early_termination"});
     config.early_termination = fitness->get_bool("early_termination", true);
     config.fitness.m = fitness->get_double("m", config.fitness.m);
     if (!(config.fitness.m >= 0.0)) fitness->at("m").fail("must be >= 0");
     config.fitness.settle_s = fitness->get_double("settle_s", 0.0);
     config.fitness.imu_weight = fitness->get_double("imu_weight", 0.0);
     if (!(config.fitness.imu_weight >= 0.0)) fitness->at("imu_weight").fail("must be >= 0");
+    config.fitness.window_s = fitness->get_double("window_s", 0.0);
+    if (!(config.fitness.window_s >= 0.0)) fitness->at("window_s").fail("must be >= 0");
     if (const auto weights = fitness->find("weights")) {
       const RobotModel& model = *config.scenario->model;
       config.fitness.joint_weights.assign(model.actuators.size(), 1.0);
@@ -467,12 +484,14 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
   try {
     config.train = std::make_shared<FitnessFunction>(
         config.scenario->model,
-        load_fit_cases(*config.scenario, config.train_logs, config.fitness.imu_weight > 0.0),
+        load_fit_cases(*config.scenario, config.train_logs, config.fitness.imu_weight > 0.0,
+                       config.fitness.window_s),
         config.fitness);
     if (!config.validation_logs.empty()) {
       config.validation = std::make_shared<FitnessFunction>(
           config.scenario->model,
-          load_fit_cases(*config.scenario, config.validation_logs, config.fitness.imu_weight > 0.0),
+          load_fit_cases(*config.scenario, config.validation_logs, config.fitness.imu_weight > 0.0,
+                         config.fitness.window_s),
           config.fitness);
     }
   } catch (const std::invalid_argument& error) {
@@ -509,6 +528,7 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
                    {"weights", config.fitness.joint_weights}};
   // Only when used, so that the hashes of existing joint-only run dirs stay valid.
   if (config.fitness.imu_weight > 0.0) id["fitness"]["imu_weight"] = config.fitness.imu_weight;
+  if (config.fitness.window_s > 0.0) id["fitness"]["window_s"] = config.fitness.window_s;
   id["strategy"] = strategy_to_json(config.strategy);
   id["seed"] = config.seed;
   config.identity = nlohmann::json(id);

@@ -146,6 +146,48 @@ TEST(EsCmaEsTest, PlainCmaStopsOnItsOwnCriteria) {
   EXPECT_LT(cma.best_fitness(), 1e-11);  // tol_fun = 1e-12 ends the run about here
 }
 
+// A rugged plateau like a simulation fitness near a wrong optimum: F = 1 + 0.01·u(x), u a
+// deterministic hash of x in [0, 1). The best of each generation jitters by 1 %, far above
+// tol_fun, and the best-ever creeps down ever more slowly; only the stall test ends the run.
+double rugged_plateau(const std::vector<double>& x) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) s += x[i] * (12.9898 + 7.233 * static_cast<double>(i));
+  const double h = std::sin(s) * 43758.5453;
+  return 1.0 + 0.01 * (h - std::floor(h));
+}
+
+TEST(EsCmaEsTest, StallEndsARunOnARuggedPlateau) {
+  const Bounds bounds{std::vector<double>(4, -1.0), std::vector<double>(4, 1.0)};
+  const auto run = [&](double tol_stall_relative) {
+    CmaEsOptions options;
+    options.seed = 3;
+    options.max_restarts = 1;
+    options.tol_stall_relative = tol_stall_relative;
+    CmaEs cma(bounds, options);
+    while (cma.generation() < 400 && !cma.should_stop()) {
+      const auto xs = cma.ask();
+      std::vector<double> fitness;
+      for (const auto& x : xs) fitness.push_back(rugged_plateau(x));
+      cma.tell(fitness);
+    }
+    return cma.run_log();
+  };
+  // λ = 8 for n = 4: the stall window is 20 + ⌈60·4/8⌉ = 50 generations.
+  const std::vector<std::string> with_stall = run(1e-3);
+  ASSERT_FALSE(with_stall.empty()) << "no restart in 400 generations";
+  EXPECT_NE(with_stall.front().find("tol_stall"), std::string::npos) << with_stall.front();
+  EXPECT_EQ(with_stall.front().rfind("run 0 (lambda 8)", 0), 0u) << with_stall.front();
+  // Without it, neither tol_fun nor stagnation ends the first run as early.
+  const std::vector<std::string> without = run(0.0);
+  if (!without.empty()) {
+    const auto generations_of = [](const std::string& line) {
+      return std::stoul(line.substr(line.rfind("after ") + 6));
+    };
+    EXPECT_GT(generations_of(without.front()), generations_of(with_stall.front()))
+        << without.front();
+  }
+}
+
 TEST(EsCmaEsTest, OptimumOnTheBoundIsFoundThroughTheReflection) {
   // Sphere centred at o_i = 1 − 0.2 i, box [2, 3]^4: the optimum is the corner (2, 2, 2, 2).
   BenchmarkProblem problem(Function::kSphere, 4, 2.0, 3.0);

@@ -47,6 +47,15 @@ struct CmaEsOptions {
   // 120 + 30n/λ, at most 20000 generations) the median of the most recent 30 % of both the
   // best-of-generation and the median-of-generation fitness is not better than of the first 30 %.
   bool check_stagnation = true;
+  // Stall: the best fitness of the run improved by less than tol_stall_relative·|best| over the
+  // last stall_generations generations (0 = 20 + ⌈60n/λ⌉, twice tol_fun's history). It catches
+  // what the absolute tol_fun and the median-based stagnation test miss on a simulation
+  // fitness: a plateau whose best and median values jitter (contacts make F rugged at small
+  // scales) at a level far above tol_fun, while σ wanders instead of shrinking. Like pycma's
+  // tolstagnation, but on the best value; 0 switches it off. On a smooth function the best
+  // improves geometrically, so the test only fires at a plateau or a noise floor.
+  double tol_stall_relative = 1e-3;
+  std::uint64_t stall_generations = 0;
   // Condition number of C above which a run stops.
   double max_condition = 1e14;
   // Generations between eigendecompositions of C; 0 = max(1, ⌊1/(10·n·(c1 + cμ))⌋), which keeps

@@ -27,6 +27,7 @@ enum class StopReason {
   kEvaluationBudget,    // the strategy's own evaluation budget cannot fit another batch
   kOptimizerConverged,  // NLopt reported success (detail: which criterion)
   kOptimizerFailed,     // NLopt reported a failure (detail: the message)
+  kTolStall,            // CMA-ES: the best fitness improved by less than a relative tolerance
 };
 const char* to_string(StopReason reason);
 // Inverse of to_string; throws CheckpointError for an unknown spelling.
