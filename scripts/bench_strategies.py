@@ -9,8 +9,8 @@ OpenMP threads and of 2 MPI ranks against 1 thread on one fixed workload (same s
 three runs must give bit-identical results).
 
 The target. Seed 001's (10+800)-ES ran ~100 generations, ~80 000 evaluations: far beyond this
-machine (~2 s per evaluation on one core, 44 h). Its final fitness cannot be lower than F*, the
-lowest fitness any method finds, so the script first runs a long reference fit (IPOP-CMA-ES,
+machine (~1 s per evaluation of the 3 s windows on one core, 22 h). Its final fitness cannot
+be lower than F*, the lowest fitness any method finds, so the script first runs a long reference fit (IPOP-CMA-ES,
 then a BOBYQA polish, on all cores; the report says if any benchmark run ends below it) and
 sets the target to F*·(1 + tolerance): a method that reaches it
 comes within that tolerance of whatever the paper's setup could reach. The budget, the same for
@@ -19,7 +19,7 @@ generation of 800 offspring (1 % of its 80 000). Last, the goal table: the refer
 IPOP-CMA-ES on two more seeds, each with the goal's budget (8 000 evaluations, a tenth of the
 paper's) and stopped at the target, and the evaluations each needed.
 
-    scripts/bench_strategies.py                  # default: 5-10 hours on 2 cores, resumable
+    scripts/bench_strategies.py                  # default: ~2.5 hours on 2 cores, resumable
     scripts/bench_strategies.py --quick          # ~10 min smoke version (1 seed, tiny budget)
     scripts/bench_strategies.py --target 1.2e-6  # skip the reference fit (and the goal table)
     scripts/bench_strategies.py --skip-strategies --skip-parallel   # only what is missing
