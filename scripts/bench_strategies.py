@@ -479,6 +479,7 @@ def summarise(table, results, args):
             "median_seconds_to_target": median_secs,
             "upper_bound": any(r["to_target_is_upper_bound"] for r in reached),
             "evaluations_to_target": [r["evaluations_to_target"] for r in mine],
+            "evaluations_to_target_is_upper_bound": [r["to_target_is_upper_bound"] for r in mine],
             "median_final_best": statistics.median(r["best_fitness"] for r in mine),
             "median_evaluations_run": statistics.median(r["evaluations"] for r in mine),
             "individuals_stopped_early": sum(r["individuals_stopped_early"] for r in mine),
@@ -526,7 +527,11 @@ def markdown(args, summary_rows, parallel, goal, started, finished, load):
             lines.append(f"| {r['label']} | every run failed (see results.json) ||||||||")
             continue
         bound = "≤ " if r["upper_bound"] else ""
-        per_seed = ", ".join("–" if e is None else str(e) for e in r["evaluations_to_target"])
+        per_seed = ", ".join(
+            "–" if e is None else ("≤ " if upper else "") + str(e)
+            for e, upper in zip(r["evaluations_to_target"],
+                                r.get("evaluations_to_target_is_upper_bound",
+                                      [False] * len(r["evaluations_to_target"]))))
         evals = r["median_evaluations_to_target"]
         secs = r["median_seconds_to_target"]
         share = (f"{bound}{100.0 * evals / PAPER_EVALUATIONS:.2g} %" if evals is not None

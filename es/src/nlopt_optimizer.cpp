@@ -145,7 +145,12 @@ void NloptOptimizer::run_nlopt() {
     if (std::isfinite(options_.target_fitness)) optimizer.set_stopval(options_.target_fitness);
     std::vector<double> x = options_.start_point;
     double f = 0.0;
-    detail = result_name(optimizer.optimize(x, f));
+    const nlopt::result result = optimizer.optimize(x, f);
+    detail = result_name(result);
+    // NLopt counts hitting its evaluation limit or the stop value as success; the caller
+    // needs to know the search was cut off rather than converged.
+    if (result == nlopt::MAXEVAL_REACHED) reason = StopReason::kEvaluationBudget;
+    if (result == nlopt::STOPVAL_REACHED) reason = StopReason::kTargetReached;
   } catch (const nlopt::forced_stop&) {
     reason = StopReason::kOptimizerFailed;
     detail = "NLopt: stopped by the caller";

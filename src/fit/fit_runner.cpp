@@ -241,6 +241,7 @@ int run_fit(const FitConfig& config, bool resume, motoflex_es::Evaluator* evalua
                                      : std::string(motoflex_es::to_string(summary.reason));
     if (summary.reason == motoflex_es::RunStopReason::kStrategy) {
       stop_reason = std::string("strategy: ") + motoflex_es::to_string(strategy->stop_reason());
+      if (!strategy->stop_detail().empty()) stop_reason += " (" + strategy->stop_detail() + ")";
     }
     // Only a strategy that stopped by itself is finished; a budget stop can be resumed with a
     // larger budget.

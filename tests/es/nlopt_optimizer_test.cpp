@@ -84,6 +84,23 @@ TEST(EsNloptTest, BobyqaConvergesToTheLocalMinimumOfRastrigin) {
             testing::benchmark(Function::kRastrigin, options.start_point));
 }
 
+// A global algorithm cut off by its evaluation limit has not converged, and says so: NLopt
+// calls MAXEVAL_REACHED a success, which a fit summary must not report as convergence.
+TEST(EsNloptTest, AnEvaluationLimitIsNotReportedAsConvergence) {
+  BenchmarkProblem problem(Function::kRastrigin, 10);
+  NloptOptions options;
+  options.algorithm = NloptAlgorithm::kCrs2Lm;
+  options.max_evaluations = 300;
+  NloptOptimizer optimizer(problem.bounds(), options);
+  SerialEvaluator evaluator;
+  Budget budget;
+  budget.max_evaluations = 1000;
+  run_optimisation(optimizer, problem, evaluator, budget);
+  EXPECT_EQ(optimizer.stop_reason(), StopReason::kEvaluationBudget) << optimizer.stop_detail();
+  EXPECT_EQ(optimizer.evaluations(), 300u);
+  EXPECT_EQ(optimizer.stop_detail(), "NLopt: maxeval reached");
+}
+
 TEST(EsNloptTest, PolishesAPointToHighAccuracy) {
   BenchmarkProblem problem(Function::kEllipsoid, 10);
   NloptOptions options;
