@@ -74,10 +74,7 @@ TEST(EsNloptTest, BobyqaConvergesToTheLocalMinimumOfRastrigin) {
   NloptOptions options;
   options.start_point = std::vector<double>(10, 3.0);
   NloptOptimizer optimizer(problem.bounds(), options);
-  SerialEvaluator evaluator;
-  Budget budget;
-  budget.max_evaluations = 1000;
-  run_optimisation(optimizer, problem, evaluator, budget);
+  testing::run_serially(optimizer, problem, 1000);
   EXPECT_EQ(optimizer.stop_reason(), StopReason::kOptimizerConverged) << optimizer.stop_detail();
   EXPECT_LT(optimizer.evaluations(), 1000u);
   EXPECT_LT(optimizer.best_fitness(),
@@ -92,10 +89,7 @@ TEST(EsNloptTest, AnEvaluationLimitIsNotReportedAsConvergence) {
   options.algorithm = NloptAlgorithm::kCrs2Lm;
   options.max_evaluations = 300;
   NloptOptimizer optimizer(problem.bounds(), options);
-  SerialEvaluator evaluator;
-  Budget budget;
-  budget.max_evaluations = 1000;
-  run_optimisation(optimizer, problem, evaluator, budget);
+  testing::run_serially(optimizer, problem, 1000);
   EXPECT_EQ(optimizer.stop_reason(), StopReason::kEvaluationBudget) << optimizer.stop_detail();
   EXPECT_EQ(optimizer.evaluations(), 300u);
   EXPECT_EQ(optimizer.stop_detail(), "NLopt: maxeval reached");
@@ -143,10 +137,7 @@ TEST(EsNloptTest, StopsCleanlyWhenDestroyedMidRun) {
   options.max_evaluations = 100000;
   {
     NloptOptimizer optimizer(problem.bounds(), options);
-    SerialEvaluator evaluator;
-    Budget budget;
-    budget.max_evaluations = 50;
-    run_optimisation(optimizer, problem, evaluator, budget);
+    testing::run_serially(optimizer, problem, 50);
     EXPECT_EQ(optimizer.evaluations(), 50u);
     EXPECT_FALSE(optimizer.should_stop());
     EXPECT_EQ(optimizer.ask().size(), 1u);  // NLopt is waiting inside its objective

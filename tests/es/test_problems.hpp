@@ -106,6 +106,15 @@ struct TargetResult {
   RunSummary summary;
 };
 
+// Runs serially until the strategy stops or `max_evaluations` would be exceeded.
+inline RunSummary run_serially(Strategy& strategy, Problem& problem,
+                               std::uint64_t max_evaluations) {
+  SerialEvaluator evaluator;
+  Budget budget;
+  budget.max_evaluations = max_evaluations;
+  return run_optimisation(strategy, problem, evaluator, budget);
+}
+
 // Runs until best <= target or `max_evaluations` would be exceeded.
 inline TargetResult run_to_target(Strategy& strategy, Problem& problem, double target,
                                   std::uint64_t max_evaluations) {
