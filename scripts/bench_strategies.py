@@ -10,9 +10,9 @@ three runs must give bit-identical results).
 
 The target. Seed 001's (10+800)-ES ran ~100 generations, ~80 000 evaluations: far beyond this
 machine (~1 s per evaluation of the 3 s windows on one core, 22 h). Its final fitness cannot
-be lower than F*, the lowest fitness any method finds, so the script first runs a long reference fit (IPOP-CMA-ES,
-then a BOBYQA polish, on all cores; the report says if any benchmark run ends below it) and
-sets the target to F*·(1 + tolerance): a method that reaches it
+be lower than F*, the lowest fitness any method finds, so the script first runs a long
+reference fit (IPOP-CMA-ES, then a BOBYQA polish, on all cores; the report says if any
+benchmark run ends below it) and sets the target to F*·(1 + tolerance): a method that reaches it
 comes within that tolerance of whatever the paper's setup could reach. The budget, the same for
 every strategy, defaults to 810 evaluations: the paper's ES's 10 initial parents and its first
 generation of 800 offspring (1 % of its 80 000). Last, the goal table: the reference method's
@@ -419,6 +419,7 @@ def run_parallel(args, out, bench_config):
         results.append({"setup": label, "load_average_before": load,
                         "loop_seconds": rows[-1]["seconds"],
                         "process_seconds": done.wall_s, "evaluations": summary["evaluations"],
+                        "generations": summary["generations"],
                         "evaluator": summary.get("evaluator", ""),
                         "best_fitness": summary["best_fitness"],
                         "fingerprint": fingerprint(run_dir)})
@@ -530,8 +531,7 @@ def markdown(args, summary_rows, parallel, goal, started, finished, load):
         per_seed = ", ".join(
             "–" if e is None else ("≤ " if upper else "") + str(e)
             for e, upper in zip(r["evaluations_to_target"],
-                                r.get("evaluations_to_target_is_upper_bound",
-                                      [False] * len(r["evaluations_to_target"]))))
+                                r["evaluations_to_target_is_upper_bound"]))
         evals = r["median_evaluations_to_target"]
         secs = r["median_seconds_to_target"]
         share = (f"{bound}{100.0 * evals / PAPER_EVALUATIONS:.2g} %" if evals is not None
@@ -592,7 +592,7 @@ def markdown(args, summary_rows, parallel, goal, started, finished, load):
         lines += [
             "",
             f"## Parallel efficiency ({parallel[0]['evaluations']} evaluations: (4+16)-ES, "
-            f"{args.parallel_generations} generation(s), seed {args.seeds[0]}, one run at a time)",
+            f"{parallel[0]['generations']} generation(s), seed {args.seeds[0]}, one run at a time)",
             "",
             "| setup | fit loop s | speed-up | efficiency | bit-identical to 1 thread | "
             "load average before |",

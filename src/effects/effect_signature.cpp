@@ -113,10 +113,7 @@ std::shared_ptr<const FitnessFunction> variant_fitness(const FitConfig& config,
     return nullptr;
   }
   return std::make_shared<const FitnessFunction>(
-      scenario.model,
-      load_fit_cases(scenario, config.train_logs, config.fitness.imu_weight > 0.0,
-                     config.fitness.window_s),
-      config.fitness);
+      scenario.model, load_fit_cases(scenario, config.train_logs, config.fitness), config.fitness);
 }
 
 ParameterSet transfer(const ParameterSet& from, const ParameterRegistry& to) {

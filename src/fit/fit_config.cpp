@@ -224,8 +224,10 @@ std::vector<std::string> list_logs(const std::string& folder_or_file, const std:
 }
 
 std::vector<FitCase> load_fit_cases(const Scenario& scenario,
-                                    const std::vector<std::string>& log_paths, bool need_imu,
-                                    double window_s) {
+                                    const std::vector<std::string>& log_paths,
+                                    const FitnessOptions& fitness) {
+  const bool need_imu = fitness.imu_weight > 0.0;
+  const double window_s = fitness.window_s;
   const RobotModel& model = *scenario.model;
   const std::size_t n = model.actuators.size();
   std::vector<FitCase> cases;
@@ -483,16 +485,12 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
   config.space = std::make_shared<ParameterSpace>(config.free, base);
   try {
     config.train = std::make_shared<FitnessFunction>(
-        config.scenario->model,
-        load_fit_cases(*config.scenario, config.train_logs, config.fitness.imu_weight > 0.0,
-                       config.fitness.window_s),
+        config.scenario->model, load_fit_cases(*config.scenario, config.train_logs, config.fitness),
         config.fitness);
     if (!config.validation_logs.empty()) {
       config.validation = std::make_shared<FitnessFunction>(
           config.scenario->model,
-          load_fit_cases(*config.scenario, config.validation_logs, config.fitness.imu_weight > 0.0,
-                         config.fitness.window_s),
-          config.fitness);
+          load_fit_cases(*config.scenario, config.validation_logs, config.fitness), config.fitness);
     }
   } catch (const std::invalid_argument& error) {
     throw InputError(config.path, 0, "fitness", error.what());

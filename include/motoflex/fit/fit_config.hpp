@@ -141,12 +141,12 @@ FitOverrides overrides_from_json(const nlohmann::json& json);
 FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides = {});
 
 // The fit cases of a list of logs for a scenario's robot (used for training and validation).
-// Each case keeps the log's IMU columns when it has them; with `need_imu` a log without them
-// throws InputError naming the log (a fitness with imu_weight > 0 scores them). window_s > 0
+// Each case keeps the log's IMU columns when it has them; when the fitness scores them
+// (imu_weight > 0) a log without them throws InputError naming the log. A fitness window_s > 0
 // keeps only the frames within window_s seconds of each log's start.
 std::vector<FitCase> load_fit_cases(const Scenario& scenario,
                                     const std::vector<std::string>& log_paths,
-                                    bool need_imu = false, double window_s = 0.0);
+                                    const FitnessOptions& fitness = {});
 
 // Logs of a folder (every *.csv, sorted by name) or a single log file.
 std::vector<std::string> list_logs(const std::string& folder_or_file, const std::string& field);
