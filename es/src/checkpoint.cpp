@@ -1,20 +1,17 @@
 #include "motoflex_es/checkpoint.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <atomic>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "motoflex_es/random.hpp"
+#include "motoflex/core/atomic_file.hpp"
+#include "motoflex/core/error.hpp"
 #include "motoflex_es/version.hpp"
 
 namespace motoflex_es {
+
+using motoflex::hash_text;
 namespace {
 
 constexpr const char* kFormatName = "motoflex_es.checkpoint";
@@ -23,81 +20,10 @@ constexpr const char* kFormatName = "motoflex_es.checkpoint";
   throw CheckpointError(where + ": " + what);
 }
 
-// Removes the temporary file unless it was renamed into place.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(std::string path) : path_(std::move(path)) {}
-  ~TemporaryFile() {
-    if (fd_ >= 0) ::close(fd_);
-    if (!path_.empty()) ::unlink(path_.c_str());
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-
-  int fd_ = -1;
-  std::string path_;
-};
-
 }  // namespace
-
-std::string hash_text(std::string_view text) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a 64 offset basis
-  for (const char c : text) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 0x100000001b3ULL;  // FNV-1a 64 prime
-  }
-  hash = mix64(hash ^ static_cast<std::uint64_t>(text.size()));
-  char digits[17];
-  std::snprintf(digits, sizeof digits, "%016llx", static_cast<unsigned long long>(hash));
-  return digits;
-}
 
 std::string config_hash(const nlohmann::json& config) {
   return hash_text(config.dump());
-}
-
-void write_file_atomically(const std::string& path, std::string_view content) {
-  const std::filesystem::path target(path);
-  if (path.empty() || !target.has_filename()) fail(path, "not a file path");
-  const std::string folder = target.has_parent_path() ? target.parent_path().string() : ".";
-  static std::atomic<unsigned> counter{0};
-  TemporaryFile temporary((std::filesystem::path(folder) /
-                           ("." + target.filename().string() + ".tmp-" +
-                            std::to_string(::getpid()) + "-" + std::to_string(counter++)))
-                              .string());
-  temporary.fd_ = ::open(temporary.path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (temporary.fd_ < 0) {
-    const int error = errno;
-    temporary.path_.clear();  // nothing was created
-    fail(path, std::string("cannot create a temporary file: ") + std::strerror(error));
-  }
-  std::string_view rest = content;
-  while (!rest.empty()) {
-    const ssize_t written = ::write(temporary.fd_, rest.data(), rest.size());
-    if (written < 0) {
-      if (errno == EINTR) continue;
-      fail(path, std::string("cannot write: ") + std::strerror(errno));
-    }
-    rest.remove_prefix(static_cast<std::size_t>(written));
-  }
-  if (::fsync(temporary.fd_) != 0) fail(path, std::string("cannot fsync: ") + std::strerror(errno));
-  const int fd = temporary.fd_;
-  temporary.fd_ = -1;
-  if (::close(fd) != 0) fail(path, std::string("cannot close: ") + std::strerror(errno));
-  if (::rename(temporary.path_.c_str(), path.c_str()) != 0) {
-    fail(path, std::string("cannot rename the temporary file: ") + std::strerror(errno));
-  }
-  temporary.path_.clear();
-  // The rename is durable only once the folder itself is synced.
-  const int folder_fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (folder_fd < 0) fail(path, std::string("cannot open its folder: ") + std::strerror(errno));
-  const int synced = ::fsync(folder_fd);
-  const int sync_error = errno;
-  ::close(folder_fd);
-  // Some file systems cannot sync a folder; the rename is then as durable as they allow.
-  if (synced != 0 && sync_error != EINVAL && sync_error != ENOTSUP) {
-    fail(path, std::string("cannot fsync its folder: ") + std::strerror(sync_error));
-  }
 }
 
 void write_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
@@ -111,7 +37,11 @@ void write_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
       {"payload_hash", hash_text(payload.dump())},
       {"payload", payload},
   };
-  write_file_atomically(path, document.dump(1) + "\n");
+  try {
+    motoflex::write_file_atomically(path, document.dump(1) + "\n");
+  } catch (const motoflex::InputError& error) {
+    throw CheckpointError(error.what());
+  }
 }
 
 Checkpoint parse_checkpoint(std::string_view text, const std::string& expected_config_hash,

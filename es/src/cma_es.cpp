@@ -48,7 +48,7 @@ CmaEs::CmaEs(Bounds bounds, CmaEsOptions options)
   }
   Eigen::VectorXd start(n);
   if (options_.start_point.empty()) {
-    RandomStream draws(options_.seed, 0, 0, Purpose::kRestart);
+    motoflex::RandomStream draws = es_stream(options_.seed, 0, 0, Purpose::kRestart);
     for (std::size_t i = 0; i < n; ++i) start(static_cast<Eigen::Index>(i)) = draws.uniform();
   } else {
     start = normalise(options_.start_point);
@@ -105,8 +105,8 @@ std::vector<std::vector<double>> CmaEs::ask() {
   pending_steps_.resize(n, static_cast<Eigen::Index>(lambda));
   Eigen::VectorXd z(n);
   for (std::size_t k = 0; k < lambda; ++k) {
-    RandomStream draws(options_.seed, generation_, k, Purpose::kCmaSample);
-    for (Eigen::Index i = 0; i < n; ++i) z(i) = draws.normal();
+    motoflex::RandomStream draws = es_stream(options_.seed, generation_, k, Purpose::kCmaSample);
+    for (Eigen::Index i = 0; i < n; ++i) z(i) = draws.normal_libm();
     // y_k = B D z_k ~ N(0, C); x_k = m + σ y_k (Hansen 2016, eq. 38–40)
     pending_steps_.col(static_cast<Eigen::Index>(k)) =
         eigenvectors_ * axis_lengths_.cwiseProduct(z);
@@ -278,7 +278,7 @@ void CmaEs::end_run(StopReason reason) {
   if (options_.restart_from_start_point && !options_.start_point.empty()) {
     start = normalise(options_.start_point);
   } else {
-    RandomStream draws(options_.seed, generation_, 0, Purpose::kRestart);
+    motoflex::RandomStream draws = es_stream(options_.seed, generation_, 0, Purpose::kRestart);
     start.resize(static_cast<Eigen::Index>(dimension()));
     for (Eigen::Index i = 0; i < start.size(); ++i) start(i) = draws.uniform();
   }

@@ -15,7 +15,7 @@ namespace {
 // Recombines one vector (x or the step sizes) of an offspring from its chosen parents.
 // `draws` supplies the discrete choices; its draw order is fixed (one draw per coordinate).
 std::vector<double> recombine(const std::vector<const std::vector<double>*>& parents,
-                              Recombination type, RandomStream& draws) {
+                              Recombination type, motoflex::RandomStream& draws) {
   const std::size_t n = parents.front()->size();
   const std::size_t rho = parents.size();
   std::vector<double> child(n);
@@ -121,7 +121,7 @@ std::vector<Individual> MuPlusLambda::initial_population() const {
     for (std::size_t i = 0; i < n; ++i) {
       individual.step[i] = clamp_step(options_.initial_step_relative * bounds_.width(i), i);
     }
-    RandomStream draws(options_.seed, generation_, k, Purpose::kInitialPopulation);
+    motoflex::RandomStream draws = es_stream(options_.seed, generation_, k, Purpose::kInitialPopulation);
     for (std::size_t i = 0; i < n; ++i) {
       const double lower = bounds_.lower[i];
       const double upper = bounds_.upper[i];
@@ -131,7 +131,7 @@ std::vector<Individual> MuPlusLambda::initial_population() const {
         individual.x[i] = options_.start_point[i];
       } else {
         individual.x[i] = reflect_into_bounds(
-            options_.start_point[i] + individual.step[i] * draws.normal(), lower, upper);
+            options_.start_point[i] + individual.step[i] * draws.normal_libm(), lower, upper);
       }
     }
   }
@@ -143,7 +143,7 @@ Individual MuPlusLambda::make_offspring(std::uint64_t index) const {
   const std::size_t mu = population_.size();
 
   // ρ distinct parents by a partial Fisher–Yates shuffle of the parent indices.
-  RandomStream parent_draws(options_.seed, generation_, index, Purpose::kParentChoice);
+  motoflex::RandomStream parent_draws = es_stream(options_.seed, generation_, index, Purpose::kParentChoice);
   std::vector<std::size_t> order(mu);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::vector<const std::vector<double>*> parent_x;
@@ -154,22 +154,22 @@ Individual MuPlusLambda::make_offspring(std::uint64_t index) const {
     parent_step.push_back(&population_[order[j]].step);
   }
 
-  RandomStream recombination_draws(options_.seed, generation_, index, Purpose::kRecombination);
+  motoflex::RandomStream recombination_draws = es_stream(options_.seed, generation_, index, Purpose::kRecombination);
   Individual child;
   child.x = recombine(parent_x, options_.object_recombination, recombination_draws);
   child.step = recombine(parent_step, options_.step_recombination, recombination_draws);
 
   // Step sizes mutate first and the new ones move x, so selection judges a step size by the
   // step it actually made (Schwefel 1995; DEAP's mutESLogNormal does the same).
-  RandomStream step_draws(options_.seed, generation_, index, Purpose::kStepSizeMutation);
-  const double global = tau_global_ * step_draws.normal();
+  motoflex::RandomStream step_draws = es_stream(options_.seed, generation_, index, Purpose::kStepSizeMutation);
+  const double global = tau_global_ * step_draws.normal_libm();
   for (std::size_t i = 0; i < n; ++i) {
     child.step[i] =
-        clamp_step(child.step[i] * std::exp(global + tau_local_ * step_draws.normal()), i);
+        clamp_step(child.step[i] * std::exp(global + tau_local_ * step_draws.normal_libm()), i);
   }
-  RandomStream object_draws(options_.seed, generation_, index, Purpose::kObjectMutation);
+  motoflex::RandomStream object_draws = es_stream(options_.seed, generation_, index, Purpose::kObjectMutation);
   for (std::size_t i = 0; i < n; ++i) {
-    child.x[i] = reflect_into_bounds(child.x[i] + child.step[i] * object_draws.normal(),
+    child.x[i] = reflect_into_bounds(child.x[i] + child.step[i] * object_draws.normal_libm(),
                                      bounds_.lower[i], bounds_.upper[i]);
   }
   child.age = 0;

@@ -9,8 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
-#include "motoflex/io/scenario.hpp"
+#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/keyframe_motion.hpp"
 #include "motoflex/sim/parallel_rollouts.hpp"
@@ -33,7 +34,7 @@ struct BenchArgs {
 std::string robot_directory(const std::string& robot) {
   namespace fs = std::filesystem;
   for (const fs::path& candidate : {fs::path(robot), fs::path("scenarios/robots") / robot,
-                                    fs::path(MOTOFLEX_SOURCE_DIR) / "scenarios/robots" / robot}) {
+                                    fs::path(data_directory()) / "scenarios/robots" / robot}) {
     if (fs::exists(candidate / "robot.yaml")) return candidate.string();
   }
   throw InputError("", 0, "--robot", "no robot '" + robot + "' (looked for <dir>/robot.yaml)");

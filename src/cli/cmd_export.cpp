@@ -23,7 +23,7 @@
 #include "motoflex/export/sdf_export.hpp"
 #include "motoflex/export/urdf_export.hpp"
 #include "motoflex/io/joint_log.hpp"
-#include "motoflex/io/log_commands.hpp"
+#include "motoflex/motion/log_commands.hpp"
 #include "motoflex/model/robot_loader.hpp"
 
 namespace motoflex::cli {

@@ -20,10 +20,10 @@
 #include "commands.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/core/random_stream.hpp"
-#include "motoflex/io/atomic_file.hpp"
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/io/joint_log.hpp"
-#include "motoflex/io/rollout_log.hpp"
-#include "motoflex/io/scenario.hpp"
+#include "motoflex/sim/rollout_log.hpp"
+#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/io/yaml_reader.hpp"
 
 namespace motoflex::cli {

@@ -6,9 +6,9 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "motoflex/effects/effect_library.hpp"
+#include "motoflex/model/effect_library.hpp"
 #include "motoflex/effects/effect_signature.hpp"
-#include "motoflex/effects/fit_run.hpp"
+#include "motoflex/fit/fit_run.hpp"
 #include "motoflex/effects/loop_report.hpp"
 
 namespace motoflex::cli {

@@ -13,8 +13,8 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/io/plot_script.hpp"
-#include "motoflex/io/rollout_log.hpp"
-#include "motoflex/io/scenario.hpp"
+#include "motoflex/sim/rollout_log.hpp"
+#include "motoflex/scenario/scenario.hpp"
 
 namespace motoflex::cli {
 namespace {

@@ -9,10 +9,10 @@
 #include <string>
 
 #include "commands.hpp"
-#include "motoflex/analysis/titan_paper_study.hpp"
+#include "motoflex/studies/titan/titan_paper_study.hpp"
 #include "motoflex/core/error.hpp"
-#include "motoflex/io/titan_study_config.hpp"
-#include "motoflex/io/titan_study_report.hpp"
+#include "motoflex/studies/titan/titan_study_config.hpp"
+#include "motoflex/studies/titan/titan_study_report.hpp"
 
 namespace motoflex::cli {
 namespace {

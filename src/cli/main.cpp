@@ -8,12 +8,14 @@
 #include <string>
 
 #include "commands.hpp"
+#include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
+#include "motoflex/core/error_collector.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"motoflex: make robot simulations match real robots (MoToFlex on ODE)"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("motoflex ") + MOTOFLEX_VERSION);
+  app.set_version_flag("--version", std::string("motoflex ") + motoflex::version());
   std::map<std::string, motoflex::cli::CommandRunner> runners;
   runners["simulate"] = motoflex::cli::add_simulate_command(app);
   runners["record"] = motoflex::cli::add_record_command(app);
@@ -33,6 +35,9 @@ int main(int argc, char** argv) {
   }
   try {
     for (const auto* sub : app.get_subcommands()) return runners.at(sub->get_name())();
+  } catch (const motoflex::InputErrors& errors) {
+    for (const auto& error : errors.errors()) std::fprintf(stderr, "motoflex: %s\n", error.what());
+    return 2;
   } catch (const motoflex::InputError& error) {
     std::fprintf(stderr, "motoflex: %s\n", error.what());
     return 2;

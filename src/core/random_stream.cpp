@@ -1,6 +1,7 @@
 #include "motoflex/core/random_stream.hpp"
 
 #include <cmath>
+#include <numbers>
 
 namespace motoflex {
 namespace {
@@ -104,6 +105,12 @@ RandomStream::RandomStream(std::initializer_list<std::uint64_t> keys) {
   key_ = key;
 }
 
+RandomStream RandomStream::with_key(std::uint64_t key) {
+  RandomStream stream;
+  stream.key_ = key;
+  return stream;
+}
+
 std::uint64_t RandomStream::next_u64() {
   // Counter-based: value_i = mix(key + i·γ); the state is the counter alone.
   return mix64(key_ + counter_++ * kGolden);
@@ -112,6 +119,21 @@ std::uint64_t RandomStream::next_u64() {
 double RandomStream::uniform() {
   // The top 53 bits fill a double's significand exactly; scaling by 2^-53 is exact too.
   return static_cast<double>(next_u64() >> 11) * 0x1.0p-53;
+}
+
+std::uint64_t RandomStream::uniform_index(std::uint64_t n) {
+  // 2^64 mod n values at the bottom would make small results more likely: reject them.
+  const std::uint64_t reject_below = (0 - n) % n;
+  while (true) {
+    const std::uint64_t draw = next_u64();
+    if (draw >= reject_below) return draw % n;
+  }
+}
+
+double RandomStream::normal_libm() {
+  const double u1 = 1.0 - uniform();  // (0, 1]: log(u1) is finite
+  const double u2 = uniform();
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 
 double RandomStream::normal() {

@@ -8,11 +8,11 @@
 #include <set>
 
 #include "motoflex/core/error.hpp"
-#include "motoflex/effects/effect_library.hpp"
-#include "motoflex/effects/effect_parameters.hpp"
-#include "motoflex/effects/fit_run.hpp"
+#include "motoflex/model/effect_library.hpp"
+#include "motoflex/fit/effect_parameters.hpp"
+#include "motoflex/fit/fit_run.hpp"
 #include "motoflex/effects/loop_report.hpp"
-#include "motoflex/effects/refit_config.hpp"
+#include "motoflex/fit/refit_config.hpp"
 
 namespace motoflex {
 namespace {

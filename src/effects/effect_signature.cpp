@@ -9,8 +9,8 @@
 #include <memory>
 #include <set>
 
-#include "motoflex/effects/effect_library.hpp"
-#include "motoflex/effects/effect_parameters.hpp"
+#include "motoflex/model/effect_library.hpp"
+#include "motoflex/fit/effect_parameters.hpp"
 
 namespace motoflex {
 namespace {

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <sstream>
 
-#include "motoflex/effects/effect_library.hpp"
-#include "motoflex/effects/fit_run.hpp"
-#include "motoflex/io/atomic_file.hpp"
+#include "motoflex/model/effect_library.hpp"
+#include "motoflex/fit/fit_run.hpp"
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/io/plot_script.hpp"
 
 namespace motoflex {

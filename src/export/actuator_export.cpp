@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "../sim/resolved_parameters.hpp"
+#include "motoflex/sim/resolved_parameters.hpp"
 #include "motoflex/core/error.hpp"
 
 namespace motoflex {

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "motoflex/core/build_info.hpp"
 #include "motoflex/export/actuator_export.hpp"
 #include "motoflex/fit/parameter_space.hpp"
 
@@ -62,7 +63,7 @@ std::string export_json(const ExportInput& input) {
       {"date", string_or_null(p.date)},
       {"motoflex_version", string_or_null(p.motoflex_version)},
       {"exported_at", utc_now_iso8601()},
-      {"exported_by", std::string("motoflex ") + MOTOFLEX_VERSION}};
+      {"exported_by", std::string("motoflex ") + version()}};
   return out.dump(2) + "\n";
 }
 

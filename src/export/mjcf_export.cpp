@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "exported_bodies.hpp"
+#include "motoflex/core/build_info.hpp"
 #include "motoflex/export/actuator_export.hpp"
 #include "xml_writer.hpp"
 
@@ -159,7 +160,7 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
 
   XmlElement mujoco("mujoco");
   mujoco.attribute("model", model.name);
-  mujoco.comment("Exported by motoflex " + std::string(MOTOFLEX_VERSION) +
+  mujoco.comment("Exported by motoflex " + std::string(version()) +
                  " for MuJoCo 2.2.2+ from " +
                  (input.provenance.source_path.empty() ? std::string("defaults")
                                                        : input.provenance.source_path) +
@@ -227,7 +228,7 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
   if (!p.config_hash.empty()) provenance += " config_hash=" + p.config_hash;
   if (!p.date.empty()) provenance += " date=" + p.date;
   if (!p.motoflex_version.empty()) provenance += " fit_motoflex_version=" + p.motoflex_version;
-  provenance += " exported_by=motoflex_" + std::string(MOTOFLEX_VERSION);
+  provenance += " exported_by=motoflex_" + std::string(version());
   custom.child("text").attribute("name", "motoflex:provenance").attribute("data", provenance);
   return mujoco.to_string();
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "exported_bodies.hpp"
+#include "motoflex/core/build_info.hpp"
 #include "motoflex/export/actuator_export.hpp"
 #include "motoflex/export/urdf_export.hpp"
 #include "xml_writer.hpp"
@@ -191,7 +192,7 @@ std::string export_sdf(const ExportInput& input) {
 
   XmlElement sdf("sdf");
   sdf.attribute("version", "1.9").attribute("xmlns:motoflex", kMotoflexXmlNamespace);
-  sdf.comment("Exported by motoflex " + std::string(MOTOFLEX_VERSION) + " from " +
+  sdf.comment("Exported by motoflex " + std::string(version()) + " from " +
               (input.provenance.source_path.empty() ? std::string("defaults")
                                                     : input.provenance.source_path) +
               "; servo " + detail::servo_description(input.servo) +

@@ -4,6 +4,7 @@
 
 #include <map>
 
+#include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/export/actuator_export.hpp"
 #include "xml_writer.hpp"
@@ -62,7 +63,7 @@ void add_provenance(TiXmlElement* parent, const FitProvenance& p) {
     if (!value.empty()) e->SetAttribute(key.c_str(), value.c_str());
   }
   e->SetAttribute("exported_at", utc_now_iso8601().c_str());
-  e->SetAttribute("exported_by", (std::string("motoflex ") + MOTOFLEX_VERSION).c_str());
+  e->SetAttribute("exported_by", (std::string("motoflex ") + version()).c_str());
 }
 
 void add_model_extension(TiXmlElement* robot, const ExportInput& input,
@@ -115,7 +116,7 @@ std::string export_urdf(const ExportInput& input) {
     set(dynamics, "friction", a.friction_nm);
   }
   const std::string note =
-      " Exported by motoflex " + std::string(MOTOFLEX_VERSION) + " (servo " +
+      " Exported by motoflex " + std::string(version()) + " (servo " +
       to_string(input.servo) +
       "): fitted <dynamics> and <limit effort velocity> on the actuated joints, one "
       "<transmission> each; <motoflex:model> at the end carries every fitted parameter that "

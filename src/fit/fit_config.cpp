@@ -7,9 +7,10 @@
 #include <sstream>
 
 #include "motoflex/core/error.hpp"
-#include "motoflex/effects/effect_library.hpp"
-#include "motoflex/effects/effect_parameters.hpp"
-#include "motoflex/io/atomic_file.hpp"
+#include "motoflex/core/text_hash.hpp"
+#include "motoflex/model/effect_library.hpp"
+#include "motoflex/fit/effect_parameters.hpp"
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/io/bam_import.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/io/yaml_reader.hpp"
@@ -28,7 +29,7 @@ std::string file_text(const std::string& path) {
 }
 
 std::string file_hash(const std::string& path) {
-  return fs::exists(path) ? motoflex_es::hash_text(file_text(path)) : std::string("absent");
+  return fs::exists(path) ? hash_text(file_text(path)) : std::string("absent");
 }
 
 std::vector<FreeParameter> read_free(const YamlValue& free, const ParameterSet& base) {

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <numbers>
 
-#include "motoflex/io/rollout_log.hpp"
+#include "motoflex/sim/rollout_log.hpp"
 
 namespace motoflex {
 namespace {

@@ -8,9 +8,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/fit/fit_report.hpp"
-#include "motoflex/io/atomic_file.hpp"
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/io/plot_script.hpp"
 #include "motoflex_es/checkpoint.hpp"
 #include "motoflex_es/cma_es.hpp"
@@ -105,7 +106,7 @@ void write_outputs(const FitConfig& config, const motoflex_es::Strategy& strateg
                              {"config_hash", config.hash},
                              {"robot", config.scenario->model->name},
                              {"date", now_iso8601()},
-                             {"motoflex_version", MOTOFLEX_VERSION}};
+                             {"motoflex_version", version()}};
   write_file_atomically((dir / "best.json").string(), best_json.dump(2) + "\n");
 
   const DetailedEvaluation train = evaluate_in_detail(*config.train, best);

@@ -5,7 +5,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "motoflex/io/atomic_file.hpp"
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/io/joint_log.hpp"
 
 namespace motoflex {

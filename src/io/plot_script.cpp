@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "motoflex/core/build_info.hpp"
+
 namespace motoflex {
 namespace {
 
@@ -17,7 +19,7 @@ std::string quoted(const std::string& text) {
 
 bool run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
   const std::filesystem::path path =
-      std::filesystem::path(MOTOFLEX_SOURCE_DIR) / "scripts" / script;
+      std::filesystem::path(data_directory()) / "scripts" / script;
   if (!std::filesystem::exists(path)) {
     std::fprintf(stderr, "motoflex: warning: no plot (missing %s)\n", path.c_str());
     return false;

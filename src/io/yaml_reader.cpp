@@ -10,6 +10,8 @@
 #include <sstream>
 #include <system_error>
 
+#include <yaml-cpp/yaml.h>
+
 #include "motoflex/core/error.hpp"
 
 namespace motoflex {
@@ -96,8 +98,24 @@ int edit_distance(std::string_view a, std::string_view b) {
   return previous[b.size()];
 }
 
-YamlValue::YamlValue(YAML::Node node, std::string file, std::string field, int line)
-    : node_(std::move(node)), file_(std::move(file)), field_(std::move(field)), line_(line) {}
+YamlValue::YamlValue(const YAML::Node& node, std::string file, std::string field, int line)
+    : node_(std::make_shared<const YAML::Node>(node)),
+      file_(std::move(file)),
+      field_(std::move(field)),
+      line_(line) {}
+
+bool YamlValue::is_null() const {
+  return node_->IsNull();
+}
+bool YamlValue::is_map() const {
+  return node_->IsMap();
+}
+bool YamlValue::is_sequence() const {
+  return node_->IsSequence();
+}
+bool YamlValue::is_scalar() const {
+  return node_->IsScalar();
+}
 
 YamlValue YamlValue::load_file(const std::string& path) {
   std::error_code ec;
@@ -143,18 +161,18 @@ YamlValue YamlValue::child(const YAML::Node& key, const YAML::Node& value) const
 }
 
 void YamlValue::require_map() const {
-  if (!node_.IsMap() && !node_.IsNull()) fail("expected a mapping, got " + describe(node_));
+  if (!node_->IsMap() && !node_->IsNull()) fail("expected a mapping, got " + describe(*node_));
 }
 
 void YamlValue::require_sequence() const {
-  if (!node_.IsSequence() && !node_.IsNull()) fail("expected a sequence, got " + describe(node_));
+  if (!node_->IsSequence() && !node_->IsNull()) fail("expected a sequence, got " + describe(*node_));
 }
 
 void YamlValue::require_plain_scalar(const char* expected) const {
-  if (!node_.IsScalar() || node_.Tag() == "!") {
-    fail(std::string("expected ") + expected + ", got " + describe(node_));
+  if (!node_->IsScalar() || node_->Tag() == "!") {
+    fail(std::string("expected ") + expected + ", got " + describe(*node_));
   }
-  const std::string& tag = node_.Tag();
+  const std::string& tag = node_->Tag();
   if (tag != kPlainTag && tag != kFloatTag && tag != kIntTag) {
     fail(std::string("expected ") + expected + ", got a value tagged '" + tag + "'");
   }
@@ -162,8 +180,8 @@ void YamlValue::require_plain_scalar(const char* expected) const {
 
 std::optional<YamlValue> YamlValue::find(std::string_view key) const {
   require_map();
-  if (node_.IsNull()) return std::nullopt;
-  for (auto it = node_.begin(); it != node_.end(); ++it) {
+  if (node_->IsNull()) return std::nullopt;
+  for (auto it = node_->begin(); it != node_->end(); ++it) {
     if (it->first.Scalar() == key) return child(it->first, it->second);
   }
   return std::nullopt;
@@ -182,8 +200,8 @@ YamlValue YamlValue::at(std::string_view key) const {
 std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
   require_map();
   std::vector<std::pair<std::string, YamlValue>> result;
-  if (node_.IsNull()) return result;
-  for (auto it = node_.begin(); it != node_.end(); ++it) {
+  if (node_->IsNull()) return result;
+  for (auto it = node_->begin(); it != node_->end(); ++it) {
     result.emplace_back(it->first.Scalar(), child(it->first, it->second));
   }
   return result;
@@ -224,9 +242,9 @@ void YamlValue::require_keys_within(std::initializer_list<std::string_view> allo
 std::vector<YamlValue> YamlValue::items() const {
   require_sequence();
   std::vector<YamlValue> result;
-  if (node_.IsNull()) return result;
+  if (node_->IsNull()) return result;
   std::size_t index = 0;
-  for (auto it = node_.begin(); it != node_.end(); ++it, ++index) {
+  for (auto it = node_->begin(); it != node_->end(); ++it, ++index) {
     const int item_line = line_of(*it);
     result.push_back(YamlValue(*it, file_, field_ + "[" + std::to_string(index) + "]",
                                item_line > 0 ? item_line : line_));
@@ -236,14 +254,14 @@ std::vector<YamlValue> YamlValue::items() const {
 
 double YamlValue::as_double() const {
   require_plain_scalar("a number");
-  const std::string& text = node_.Scalar();
+  const std::string& text = node_->Scalar();
   if (is_yaml_special_float(text)) fail("non-finite number '" + text + "' is not allowed");
   const std::string_view digits = strip_plus(text);
   double value = 0.0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (ec == std::errc::result_out_of_range) fail("number '" + text + "' is out of range");
   if (ec != std::errc() || end != digits.data() + digits.size()) {
-    fail("expected a number, got " + describe(node_));
+    fail("expected a number, got " + describe(*node_));
   }
   if (!std::isfinite(value)) fail("non-finite number '" + text + "' is not allowed");
   return value;
@@ -251,28 +269,28 @@ double YamlValue::as_double() const {
 
 int YamlValue::as_int() const {
   require_plain_scalar("an integer");
-  const std::string& text = node_.Scalar();
+  const std::string& text = node_->Scalar();
   const std::string_view digits = strip_plus(text);
   int value = 0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (ec == std::errc::result_out_of_range) fail("integer '" + text + "' is out of range");
   if (ec != std::errc() || end != digits.data() + digits.size()) {
-    fail("expected an integer, got " + describe(node_));
+    fail("expected an integer, got " + describe(*node_));
   }
   return value;
 }
 
 bool YamlValue::as_bool() const {
   require_plain_scalar("true or false");
-  const std::string& text = node_.Scalar();
+  const std::string& text = node_->Scalar();
   if (text == "true" || text == "True" || text == "TRUE") return true;
   if (text == "false" || text == "False" || text == "FALSE") return false;
-  fail("expected true or false, got " + describe(node_));
+  fail("expected true or false, got " + describe(*node_));
 }
 
 std::string YamlValue::as_string() const {
-  if (!node_.IsScalar()) fail("expected a string, got " + describe(node_));
-  return node_.Scalar();
+  if (!node_->IsScalar()) fail("expected a string, got " + describe(*node_));
+  return node_->Scalar();
 }
 
 std::vector<double> YamlValue::as_double_list() const {

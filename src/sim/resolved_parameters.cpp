@@ -1,4 +1,4 @@
-#include "resolved_parameters.hpp"
+#include "motoflex/sim/resolved_parameters.hpp"
 
 #include <cmath>
 #include <string>

@@ -1,5 +1,7 @@
 #include "motoflex/sim/rollout.hpp"
 
+#include <ode/ode.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,7 +16,8 @@
 #include "motoflex/sim/joint_encoder.hpp"
 #include "motoflex/sim/ode_runtime.hpp"
 #include "ode_axis.hpp"
-#include "resolved_parameters.hpp"
+#include "motoflex/sim/resolved_parameters.hpp"
+#include "rollout_ode_access.hpp"
 
 namespace motoflex {
 namespace {
@@ -84,6 +87,7 @@ struct Rollout::Impl {
     std::size_t body_index;
   };
   std::vector<GeomRef> foot_geoms;
+  std::vector<dJointFeedback> joint_feedback;    // per model joint (enable_joint_feedback)
   std::vector<dJointFeedback> contact_feedback;  // kMaxContactsPerFoot per foot box
   std::vector<std::size_t> contact_owner;        // foot box of each used feedback slot
   std::size_t contacts_used = 0;
@@ -633,14 +637,72 @@ std::string Rollout::foot_name(std::size_t foot) const {
   return impl_->model.bodies[impl_->foot_geoms.at(foot).body_index].name;
 }
 
-dWorldID Rollout::world() const {
-  return impl_->world;
+bool Rollout::body_is_dynamic(std::size_t index) const {
+  return impl_->bodies.at(index) != nullptr;
 }
-dBodyID Rollout::body(std::size_t index) const {
-  return impl_->bodies.at(index);
+
+Rollout::BodyState Rollout::body_state(std::size_t index) const {
+  const dBodyID body = impl_->bodies.at(index);
+  if (body == nullptr) throw ModelError(impl_->model.bodies[index].name + " is a static body");
+  const auto vec = [](const dReal* v) { return Eigen::Vector3d(v[0], v[1], v[2]); };
+  BodyState state;
+  state.position_m = vec(dBodyGetPosition(body));
+  state.R_WB = from_ode_rotation(dBodyGetRotation(body));
+  state.velocity_m_s = vec(dBodyGetLinearVel(body));
+  state.angular_velocity_rad_s = vec(dBodyGetAngularVel(body));
+  dMass mass;
+  dBodyGetMass(body, &mass);
+  state.mass_kg = mass.mass;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) state.inertia_B_kg_m2(r, c) = mass.I[r * 4 + c];
+  }
+  return state;
 }
-dJointID Rollout::joint(std::size_t index) const {
-  return impl_->joints.at(index);
+
+Eigen::Vector3d Rollout::gravity_m_s2() const {
+  dVector3 g;
+  dWorldGetGravity(impl_->world, g);
+  return {g[0], g[1], g[2]};
+}
+
+void Rollout::enable_joint_feedback(std::size_t joint) {
+  Impl& s = *impl_;
+  // Sized once: ODE keeps a pointer to each entry, so the vector must never reallocate.
+  if (s.joint_feedback.empty()) s.joint_feedback.resize(s.joints.size());
+  dJointSetFeedback(s.joints.at(joint), &s.joint_feedback[joint]);
+}
+
+Rollout::JointFeedback Rollout::joint_feedback(std::size_t joint) const {
+  const Impl& s = *impl_;
+  if (s.joint_feedback.empty() || dJointGetFeedback(s.joints.at(joint)) == nullptr) {
+    throw ModelError("joint feedback of " + s.model.joints.at(joint).name + " is not enabled");
+  }
+  const dJointFeedback& fb = s.joint_feedback[joint];
+  const auto vec = [](const dReal* v) { return Eigen::Vector3d(v[0], v[1], v[2]); };
+  return {vec(fb.f1), vec(fb.t1), vec(fb.f2), vec(fb.t2)};
+}
+
+void Rollout::hinge_frame(std::size_t joint, Eigen::Vector3d& anchor_m,
+                          Eigen::Vector3d& axis) const {
+  const dJointID j = impl_->joints.at(joint);
+  if (dJointGetType(j) != dJointTypeHinge) {
+    throw ModelError(impl_->model.joints.at(joint).name + " is not a hinge");
+  }
+  dVector3 a, x;
+  dJointGetHingeAnchor(j, a);
+  dJointGetHingeAxis(j, x);
+  anchor_m = {a[0], a[1], a[2]};
+  axis = {x[0], x[1], x[2]};
+}
+
+dWorldID RolloutOdeAccess::world(const Rollout& rollout) {
+  return rollout.impl_->world;
+}
+dBodyID RolloutOdeAccess::body(const Rollout& rollout, std::size_t index) {
+  return rollout.impl_->bodies.at(index);
+}
+dJointID RolloutOdeAccess::joint(const Rollout& rollout, std::size_t index) {
+  return rollout.impl_->joints.at(index);
 }
 
 }  // namespace motoflex

@@ -45,9 +45,11 @@ inline CommandResult run_motoflex(const std::string& arguments) {
   return result;
 }
 
-// A fresh, empty folder for one test.
+// A fresh, empty folder for one test. The process id keeps tests that ctest runs at the same
+// time (and test suites of other checkouts) out of each other's folders.
 inline std::filesystem::path fresh_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("motoflex_" + name);
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("motoflex_" + std::to_string(getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

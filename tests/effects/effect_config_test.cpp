@@ -5,13 +5,13 @@
 
 #include <algorithm>
 
-#include "../cli/cli_test_support.hpp"
-#include "../fit/fit_test_support.hpp"
+#include "cli/cli_test_support.hpp"
+#include "fit/fit_test_support.hpp"
 #include "effect_test_support.hpp"
 #include "motoflex/core/error.hpp"
-#include "motoflex/effects/effect_library.hpp"
+#include "motoflex/model/effect_library.hpp"
 #include "motoflex/effects/effect_loop.hpp"
-#include "motoflex/effects/fit_run.hpp"
+#include "motoflex/fit/fit_run.hpp"
 
 namespace motoflex::testing {
 namespace {

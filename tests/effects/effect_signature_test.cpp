@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "../cli/cli_test_support.hpp"
+#include "cli/cli_test_support.hpp"
 #include "effect_test_support.hpp"
-#include "motoflex/effects/effect_library.hpp"
+#include "motoflex/model/effect_library.hpp"
 #include "motoflex/effects/effect_signature.hpp"
 
 namespace motoflex::testing {

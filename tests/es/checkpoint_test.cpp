@@ -101,7 +101,7 @@ TEST_F(EsCheckpointTest, NlohmannWritesDoublesThatReadBackBitExactly) {
                                 1e23,
                                 9007199254740993.0,
                                 std::nextafter(1.0, 2.0)};
-  RandomStream bits(1, 0, 0, Purpose::kTest);
+  motoflex::RandomStream bits = es_stream(1, 0, 0, Purpose::kTest);
   while (values.size() < 20000) {
     const std::uint64_t pattern = bits.next_u64();
     double value;
@@ -173,7 +173,7 @@ TEST_F(EsCheckpointTest, ConfigHashMismatchIsRejected) {
   EXPECT_NE(message.find("written for config"), std::string::npos) << message;
   EXPECT_EQ(message.rfind(path("run.ckpt"), 0), 0u) << "starts with the file: " << message;
   EXPECT_EQ(config_hash({{"a", 1}, {"b", 2}}), config_hash({{"b", 2}, {"a", 1}}));
-  EXPECT_EQ(hash_text("").size(), 16u);
+  EXPECT_EQ(motoflex::hash_text("").size(), 16u);
 }
 
 TEST_F(EsCheckpointTest, OtherFormatVersionIsRejected) {

@@ -6,10 +6,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "../cli/cli_test_support.hpp"
+#include "cli/cli_test_support.hpp"
 #include "export_test_support.hpp"
 #include "motoflex/io/joint_log.hpp"
-#include "motoflex/io/scenario.hpp"
+#include "motoflex/scenario/scenario.hpp"
 
 namespace motoflex {
 namespace {

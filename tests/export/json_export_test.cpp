@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "export_test_support.hpp"
+#include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/export/actuator_export.hpp"
 #include "motoflex/export/json_export.hpp"
@@ -44,7 +45,7 @@ TEST(JsonExport, CarriesEveryParameterWithUnitAndTheProvenance) {
   EXPECT_EQ(p["date"], "2025-01-02T03:04:05Z");
   EXPECT_EQ(p["motoflex_version"], "0.1.0");
   EXPECT_EQ(p["fit"], "fits/test.yaml");
-  EXPECT_EQ(p["exported_by"], std::string("motoflex ") + MOTOFLEX_VERSION);
+  EXPECT_EQ(p["exported_by"], std::string("motoflex ") + version());
 
   const auto actuators = export_actuators(*f.input);
   ASSERT_EQ(out["joints"].size(), actuators.size());

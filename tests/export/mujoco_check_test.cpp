@@ -10,7 +10,7 @@
 
 #include "export_test_support.hpp"
 #include "motoflex/export/mujoco_check.hpp"
-#include "motoflex/io/scenario.hpp"
+#include "motoflex/scenario/scenario.hpp"
 
 namespace motoflex {
 namespace {

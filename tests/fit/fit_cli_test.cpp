@@ -12,7 +12,7 @@
 #include <random>
 #include <thread>
 
-#include "../cli/cli_test_support.hpp"
+#include "cli/cli_test_support.hpp"
 #include "fit_test_support.hpp"
 
 extern char** environ;

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "../cli/cli_test_support.hpp"
+#include "cli/cli_test_support.hpp"
 #include "fit_test_support.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/fit/fit_config.hpp"

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../cli/cli_test_support.hpp"
+#include "cli/cli_test_support.hpp"
 #include "fit_test_support.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/fit/fit_config.hpp"

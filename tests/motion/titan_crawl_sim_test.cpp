@@ -25,8 +25,9 @@ const RobotModel& titan_model() {
 
 // Lowest corner of a foot's contact box above the ground [m] (≤ 0 while it touches).
 double foot_height_m(const RobotModel& model, const Rollout& rollout, int body) {
-  const dReal* p = dBodyGetPosition(rollout.body(body));
-  const dReal* R = dBodyGetRotation(rollout.body(body));
+  const Rollout::BodyState state = rollout.body_state(static_cast<std::size_t>(body));
+  const Eigen::Vector3d& p = state.position_m;
+  const Eigen::Matrix3d& R = state.R_WB;
   double lowest = 1e9;
   for (const BoxGeom& box : model.bodies[body].boxes) {
     if (!box.is_foot) continue;
@@ -35,7 +36,7 @@ double foot_height_m(const RobotModel& model, const Rollout& rollout, int body) 
                                   ((corner & 2) ? 0.5 : -0.5) * box.size_m.y(),
                                   ((corner & 4) ? 0.5 : -0.5) * box.size_m.z());
       const Eigen::Vector3d c = box.X_BG * local;  // in the body frame
-      lowest = std::min(lowest, p[2] + R[8] * c.x() + R[9] * c.y() + R[10] * c.z());
+      lowest = std::min(lowest, p.z() + R(2, 0) * c.x() + R(2, 1) * c.y() + R(2, 2) * c.z());
     }
   }
   return lowest;

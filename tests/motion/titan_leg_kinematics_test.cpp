@@ -214,27 +214,17 @@ TEST(TitanLegKinematics, ForwardKinematicsMatchesTheOdeBodies) {
   const Rollout rollout(model, parameters, options, pose);
 
   // Body frame of the ODE robot from its root body (placed above the ground, not at W0).
-  const dBodyID root = rollout.body(model.root_body);
-  const dReal* p_root = dBodyGetPosition(root);
-  const dReal* R_root = dBodyGetRotation(root);
-  Eigen::Matrix3d R_WB;
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) R_WB(r, c) = R_root[r * 4 + c];
-  }
-  const Eigen::Vector3d x_WB = Eigen::Vector3d(p_root[0], p_root[1], p_root[2]) -
-                               R_WB * model.bodies[model.root_body].com_W0_m;
+  const Rollout::BodyState root = rollout.body_state(static_cast<std::size_t>(model.root_body));
+  const Eigen::Matrix3d R_WB = root.R_WB;
+  const Eigen::Vector3d x_WB = root.position_m - R_WB * model.bodies[model.root_body].com_W0_m;
 
   for (const TitanLeg leg : kTitanLegs) {
     const std::string name = to_string(leg);
     const JointSpec& j4 = model_joint(model, name + "_J4");
-    const dBodyID foot = rollout.body(j4.child_body);
-    const dReal* p = dBodyGetPosition(foot);
-    const dReal* R = dBodyGetRotation(foot);
+    const Rollout::BodyState foot = rollout.body_state(static_cast<std::size_t>(j4.child_body));
     Eigen::Isometry3d X_WF = Eigen::Isometry3d::Identity();
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) X_WF.linear()(r, c) = R[r * 4 + c];
-    }
-    X_WF.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
+    X_WF.linear() = foot.R_WB;
+    X_WF.translation() = foot.position_m;
     const Eigen::Vector3d ankle_B =
         R_WB.transpose() * (ankle_from_foot_body(model, name, X_WF) - x_WB);
     const TitanLegPoints fk =

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "motoflex/io/scenario.hpp"
+#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/sim/parallel_rollouts.hpp"
 #include "motoflex/sim/rollout.hpp"
 

@@ -17,6 +17,7 @@
 #include "motoflex/model/parameters.hpp"
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/sim/rollout.hpp"
+#include "rollout_ode_access.hpp"
 
 namespace motoflex {
 namespace {
@@ -112,7 +113,7 @@ class FlexLinkTest : public ::testing::Test {
   // Bending of the outer piece relative to the inner one about +y (tip down is positive).
   static double bend_rad(const Rollout& rollout) {
     auto pitch = [&](int b) {
-      const dReal* R = dBodyGetRotation(rollout.body(b));
+      const dReal* R = dBodyGetRotation(RolloutOdeAccess::body(rollout, b));
       return std::atan2(-R[8], R[0]);  // rotation about y of the body's x axis: (R20, R00)
     };
     return pitch(body_named("beam#1")) - pitch(body_named("beam"));

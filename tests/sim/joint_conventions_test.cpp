@@ -14,6 +14,7 @@
 #include "motoflex/model/parameters.hpp"
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/sim/rollout.hpp"
+#include "rollout_ode_access.hpp"
 
 namespace motoflex {
 namespace {
@@ -68,7 +69,7 @@ TEST(JointConventionsTest, PlacedBodiesReadBackTheirPose) {
       }
       for (std::size_t j = 0; j < model.joints.size(); ++j) {
         const JointSpec& spec = model.joints[j];
-        dJointID joint = rollout.joint(j);
+        dJointID joint = RolloutOdeAccess::joint(rollout, j);
         dVector3 a1, a2;
         if (spec.kind == JointKind::kHinge) {
           dJointGetHingeAnchor(joint, a1);
@@ -102,7 +103,7 @@ TEST(JointConventionsTest, NaoStandPoseHasTheLegGeometry) {
     const Rollout rollout(model, params, options, model.stand_pose_vector());
     // The torso link is the root link, so its origin is the build frame's: −com_W0 in the
     // torso body's frame.
-    const dBodyID torso = rollout.body(model.torso_body);
+    const dBodyID torso = RolloutOdeAccess::body(rollout, model.torso_body);
     dVector3 origin;
     const Eigen::Vector3d com_W0 = model.bodies[model.torso_body].com_W0_m;
     dBodyGetRelPointPos(torso, -com_W0.x(), -com_W0.y(), -com_W0.z(), origin);
@@ -116,11 +117,11 @@ TEST(JointConventionsTest, NaoStandPoseHasTheLegGeometry) {
 
 // A weightless robot lifted 0.5 m clear of the ground (no contacts), for joint-level checks.
 void lift_and_float(const RobotModel& model, Rollout& rollout) {
-  dWorldSetGravity(rollout.world(), 0.0, 0.0, 0.0);
+  dWorldSetGravity(RolloutOdeAccess::world(rollout), 0.0, 0.0, 0.0);
   if (model.fixed_base) return;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const dReal* p = dBodyGetPosition(rollout.body(b));
-    dBodySetPosition(rollout.body(b), p[0], p[1], p[2] + 0.5);
+    const dReal* p = dBodyGetPosition(RolloutOdeAccess::body(rollout, b));
+    dBodySetPosition(RolloutOdeAccess::body(rollout, b), p[0], p[1], p[2] + 0.5);
   }
 }
 

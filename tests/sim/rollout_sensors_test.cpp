@@ -12,6 +12,7 @@
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/keyframe_motion.hpp"
 #include "motoflex/sim/rollout.hpp"
+#include "rollout_ode_access.hpp"
 
 namespace motoflex {
 namespace {
@@ -65,7 +66,7 @@ TEST(RolloutSensorsTest, ImuReportsTorsoRollAndPitch) {
   RolloutOptions options;
   options.servo = ServoKind::kIdeal;
   Rollout rollout(nao, params, options, nao.stand_pose_vector());
-  const dBodyID torso = rollout.body(nao.torso_body);
+  const dBodyID torso = RolloutOdeAccess::body(rollout, nao.torso_body);
   for (const auto& [yaw, pitch, roll] :
        {std::tuple{0.0, 0.0, 0.3}, std::tuple{0.0, -0.2, 0.0}, std::tuple{1.0, 0.25, -0.4},
         std::tuple{-2.5, -0.6, 0.7}}) {

@@ -5,6 +5,8 @@
 #include <string>
 #include <string_view>
 
+#include "motoflex/core/text_hash.hpp"
+
 namespace motoflex_es {
 
 // A checkpoint or saved strategy state that cannot be used: unreadable, truncated or corrupt,
@@ -35,10 +37,7 @@ struct Checkpoint {
   nlohmann::json extra = nlohmann::json::object();
 };
 
-// 64-bit FNV-1a of the bytes, finished with SplitMix64's mixer, as 16 lower-case hex digits.
-// Detects accidental change, not tampering.
-std::string hash_text(std::string_view text);
-// hash_text(config.dump()): the same configuration gives the same hash on every run.
+// motoflex::hash_text(config.dump()): the same configuration gives the same hash on every run.
 std::string config_hash(const nlohmann::json& config);
 
 // Writes the checkpoint so that a crash leaves either the previous file or the new one, never a
@@ -55,9 +54,5 @@ Checkpoint read_checkpoint(const std::string& path, const std::string& expected_
 // The same validation on text already in memory; `source` names it in error messages.
 Checkpoint parse_checkpoint(std::string_view text, const std::string& expected_config_hash,
                             const std::string& source);
-
-// The atomic replace used by write_checkpoint, for other files of a run (summaries, results).
-// Throws CheckpointError naming `path` on failure.
-void write_file_atomically(const std::string& path, std::string_view content);
 
 }  // namespace motoflex_es

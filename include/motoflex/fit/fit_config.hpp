@@ -9,7 +9,7 @@
 
 #include "motoflex/fit/fitness.hpp"
 #include "motoflex/fit/parameter_space.hpp"
-#include "motoflex/io/scenario.hpp"
+#include "motoflex/scenario/scenario.hpp"
 
 namespace motoflex {
 

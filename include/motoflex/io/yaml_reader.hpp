@@ -1,13 +1,16 @@
 #pragma once
 
 #include <initializer_list>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
+namespace YAML {
+class Node;
+}
 
 namespace motoflex {
 
@@ -42,13 +45,10 @@ class YamlValue {
   const std::string& field() const { return field_; }
   // 1-based line of this value (of its key, for mapping entries); 0 when unknown.
   int line() const { return line_; }
-  // The raw yaml-cpp node, for the rare case the accessors below do not cover.
-  const YAML::Node& node() const { return node_; }
-
-  bool is_null() const { return node_.IsNull(); }
-  bool is_map() const { return node_.IsMap(); }
-  bool is_sequence() const { return node_.IsSequence(); }
-  bool is_scalar() const { return node_.IsScalar(); }
+  bool is_null() const;
+  bool is_map() const;
+  bool is_sequence() const;
+  bool is_scalar() const;
 
   // Mapping access. Throws InputError if this value is neither a mapping nor empty.
   bool has(std::string_view key) const;
@@ -90,14 +90,16 @@ class YamlValue {
   [[noreturn]] void fail(const std::string& message) const;
 
  private:
-  YamlValue(YAML::Node node, std::string file, std::string field, int line);
+  YamlValue(const YAML::Node& node, std::string file, std::string field, int line);
 
   YamlValue child(const YAML::Node& key, const YAML::Node& value) const;
   void require_map() const;
   void require_sequence() const;
   void require_plain_scalar(const char* expected) const;
 
-  YAML::Node node_;
+  // yaml-cpp stays out of this header: the node lives behind a pointer (yaml-cpp nodes are
+  // handles to shared data, so a copy of the pointer is as cheap as a copy of the node).
+  std::shared_ptr<const YAML::Node> node_;
   std::string file_;
   std::string field_;
   int line_ = 0;

@@ -1,7 +1,5 @@
 #pragma once
 
-#include <ode/ode.h>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -99,12 +97,38 @@ class Rollout {
   Eigen::Vector3d foot_force_n(std::size_t foot) const;
   std::string foot_name(std::size_t foot) const;
 
-  // Raw handles for studies that need ODE directly (joint feedback, contact forces).
-  dWorldID world() const;
-  dBodyID body(std::size_t index) const;
-  dJointID joint(std::size_t index) const;
+  // Rigid-body state of model body `index` (ModelError for a static, welded body): CoM
+  // position, orientation R_WB, linear and angular velocity (world frame), mass and inertia
+  // about the CoM in the body frame.
+  struct BodyState {
+    Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
+    Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();
+    Eigen::Vector3d angular_velocity_rad_s = Eigen::Vector3d::Zero();
+    double mass_kg = 0.0;
+    Eigen::Matrix3d inertia_B_kg_m2 = Eigen::Matrix3d::Zero();
+  };
+  // False for a static body (the welded base of a fixed-base robot).
+  bool body_is_dynamic(std::size_t index) const;
+  BodyState body_state(std::size_t index) const;
+  Eigen::Vector3d gravity_m_s2() const;
+
+  // Joint constraint forces (seed 000 eq. 4–5): after enable_joint_feedback(j), every step
+  // records the force and torque model joint j applies to its body 1 (the child of a hinge:
+  // Rollout's convention) and body 2 (the parent), at the bodies' CoMs, world frame.
+  struct JointFeedback {
+    Eigen::Vector3d force1_n = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque1_nm = Eigen::Vector3d::Zero();
+    Eigen::Vector3d force2_n = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque2_nm = Eigen::Vector3d::Zero();
+  };
+  void enable_joint_feedback(std::size_t joint);
+  JointFeedback joint_feedback(std::size_t joint) const;
+  // A hinge joint's current anchor (as attached to body 1) and unit axis, world frame.
+  void hinge_frame(std::size_t joint, Eigen::Vector3d& anchor_m, Eigen::Vector3d& axis) const;
 
  private:
+  friend struct RolloutOdeAccess;  // src/sim/rollout_ode_access.hpp: ODE handles for tests
   struct Impl;
   std::unique_ptr<Impl> impl_;
   double time_s_ = 0.0;

@@ -1,0 +1,75 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "motoflex/model/parameters.hpp"
+#include "motoflex/model/robot_model.hpp"
+#include "motoflex/motion/command_trajectory.hpp"
+#include "motoflex/sim/rollout.hpp"
+
+namespace motoflex {
+
+// One simulation set-up read from a scenario YAML: which robot, how it is simulated, what it is
+// commanded to do, and parameter values on top of the robot's defaults.
+//
+//   name: nao_default            # optional, defaults to the file stem
+//   robot: robots/nao            # folder with robot.yaml, relative to this file
+//   servo: motoflex              # optional; the robot's default otherwise
+//   seed: 1                      # sensor-noise stream
+//   physics: {dt_s: 0.001, solver: step, quickstep_iterations: 20, gear_substeps: 100,
+//             flex_sub_bodies: 1, universal_joints: true, settle_s: 0.5, hold_torso: false}
+//   motion:                      # exactly one of:
+//     log: ../reference_data/walk.csv        # replay the .cmd columns of a joint log
+//     keyframes: {rate_hz: 100, frames: [{t_s: 0, pose: {LKneePitch: 0.5}}, ...]}
+//     stand: {duration_s: 5, rate_hz: 100}   # hold the robot's stand pose
+//     walk: {speed_mm_s: 100, step_duration_s: 1}  # Nao walk / kick; options in
+//     kick: {kick_leg: right}                #   src/scenario/nao_scenario_motion.hpp
+//     titan_crawl: {posture: A, periods: 3}  # TITAN-VIII motions of seed 000; options in
+//     titan_updown: {amplitude_m: 0.03}      #   src/scenario/titan_scenario_motion.hpp
+//     titan_stand: {duration_s: 5}
+//   parameters: {motor.R_ohm: 6.5}           # overrides
+struct Scenario {
+  std::string path;
+  std::string name;
+  std::shared_ptr<const RobotModel> model;
+  ParameterSet parameters;
+  RolloutOptions rollout;
+  CommandTrajectory commands;
+  double log_rate_hz = 100.0;
+  std::string motion_description;
+  // Per-log parameters of a replayed log's sidecar (experimental conditions such as a bench's
+  // mass and gain); they are already applied to `parameters` and travel on into logs recorded
+  // from this scenario.
+  std::map<std::string, double> log_parameters;
+};
+
+// Command-line replacements applied while loading (they win over the file).
+struct ScenarioOverrides {
+  std::optional<std::string> motion_log;       // --motion LOG.csv
+  std::optional<std::string> parameters_json;  // --params P.json
+  std::optional<StepSolver> solver;            // --solver step|quick
+  std::optional<ServoKind> servo;              // --servo
+  std::optional<int> flex_sub_bodies;
+  std::optional<int> gear_substeps;
+  std::optional<bool> universal_joints;
+  std::optional<double> settle_s;
+  std::optional<double> duration_s;  // truncate the motion
+  bool motion_optional = false;      // a scenario without `motion` is accepted (fits bring logs)
+};
+
+// Throws InputError naming file, line and field for anything wrong in the scenario, the robot,
+// the motion log or the parameter file.
+Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides = {});
+
+std::optional<StepSolver> parse_step_solver(const std::string& text);
+
+class YamlValue;
+// Reads a `physics:` section's `dt_s` (in (0, 0.01] s) and `solver` (step | quick) into
+// `rollout`, leaving what is absent; throws InputError naming the key otherwise. The caller
+// checks which other keys the section may have.
+void read_step_settings(const YamlValue& physics, RolloutOptions& rollout);
+
+}  // namespace motoflex

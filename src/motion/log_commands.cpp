@@ -1,0 +1,50 @@
+#include "motoflex/motion/log_commands.hpp"
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/io/joint_log.hpp"
+
+namespace motoflex {
+
+CommandTrajectory read_log_commands(const RobotModel& model, const std::string& path,
+                                    ParameterSet& parameters,
+                                    std::map<std::string, double>& log_parameters,
+                                    std::string* description) {
+  JointLogRequirements requirements;
+  requirements.need_commanded = true;
+  requirements.joints = model.actuator_names();
+  const JointLog log = read_joint_log(path, requirements);
+  if (!log.meta.robot.empty() && log.meta.robot != model.name) {
+    throw InputError(joint_log_sidecar_path(path), 0, "robot",
+                     "log is of robot '" + log.meta.robot + "', the model is '" + model.name + "'");
+  }
+  for (const auto& [name, value] : log.meta.parameters) {
+    if (!parameters.registry().contains(name)) {
+      throw InputError(joint_log_sidecar_path(path), 0, "parameters." + name,
+                       "unknown parameter for robot " + model.name);
+    }
+    parameters.set(name, value);
+    log_parameters[name] = value;
+  }
+  const std::size_t n = model.actuators.size();
+  std::vector<double> angles(log.frames() * n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t column = *log.joint_index(model.actuators[j].name);
+    for (std::size_t f = 0; f < log.frames(); ++f) angles[f * n + j] = log.commanded(f, column);
+  }
+  if (description != nullptr) {
+    *description = log.meta.motion.empty() ? "replay of " + path : log.meta.motion;
+  }
+  return CommandTrajectory(log.time_s, std::move(angles), n);
+}
+
+CommandTrajectory truncate_trajectory(const CommandTrajectory& in, double duration_s) {
+  std::vector<double> times, angles;
+  for (std::size_t f = 0; f < in.frames(); ++f) {
+    if (in.time_s(f) - in.start_s() > duration_s + 1e-9) break;
+    times.push_back(in.time_s(f));
+    for (std::size_t j = 0; j < in.joints(); ++j) angles.push_back(in.angle_rad(f, j));
+  }
+  return CommandTrajectory(std::move(times), std::move(angles), in.joints());
+}
+
+}  // namespace motoflex
