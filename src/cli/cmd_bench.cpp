@@ -11,10 +11,10 @@
 #include "commands.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
-#include "motoflex/scenario/scenario.hpp"
-#include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/keyframe_motion.hpp"
+#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/sim/parallel_rollouts.hpp"
+#include "motoflex/sim/robot_parameter_check.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -50,15 +50,14 @@ int run(const BenchArgs& args) {
   StructureOptions structure;
   structure.flex_sub_bodies = args.flex;
   structure.universal_joints = !args.no_universal;
-  const RobotModel model = load_robot_model(robot_directory(args.robot), structure);
+  const RobotModel model = load_robot(robot_directory(args.robot), structure);
   RolloutOptions options;
   options.solver = *solver;
   options.gear_substeps = args.substeps;
   options.servo = model.default_servo;
   if (!args.servo.empty()) {
-    const auto servo = parse_servo_kind(args.servo);
-    if (!servo) throw InputError("", 0, "--servo", "expected motoflex, velocity, ideal or bench");
-    options.servo = *servo;
+    check_servo_parameters(model, args.servo, "", 0, "--servo");
+    options.servo = args.servo;
   }
   const ParameterSet parameters(model.parameters);
   const std::vector<double> pose = model.stand_pose_vector();
@@ -76,7 +75,7 @@ int run(const BenchArgs& args) {
   nlohmann::ordered_json out;
   out["robot"] = model.name;
   out["solver"] = args.solver;
-  out["servo"] = to_string(options.servo);
+  out["servo"] = options.servo;
   out["flex_sub_bodies"] = args.flex;
   out["gear_substeps"] = args.substeps;
   out["universal_joints"] = !args.no_universal;

@@ -24,7 +24,7 @@
 #include "motoflex/export/urdf_export.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/motion/log_commands.hpp"
-#include "motoflex/model/robot_loader.hpp"
+#include "motoflex/sim/robot_parameter_check.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -83,19 +83,11 @@ int run(const ExportArgs& args) {
   }
   StructureOptions structure;
   structure.flex_sub_bodies = args.flex_sub_bodies;
-  const RobotModel model = load_robot_model(args.robot, structure);
-  ServoKind servo = model.default_servo;
+  const RobotModel model = load_robot(args.robot, structure);
+  std::string servo = model.default_servo;
   if (!args.servo.empty()) {
-    const auto parsed = parse_servo_kind(args.servo);
-    if (!parsed) throw InputError("", 0, "--servo", "expected motoflex, velocity, ideal or bench");
-    servo = *parsed;
-  }
-  for (const auto& name : required_parameters(model, servo)) {
-    if (!model.parameters.contains(name)) {
-      throw InputError(args.robot, 0, "--servo",
-                       "robot " + model.name + " does not declare '" + name + "' for servo '" +
-                           to_string(servo) + "'");
-    }
+    check_servo_parameters(model, args.servo, "", 0, "--servo");
+    servo = args.servo;
   }
   ExportInput input{model, ParameterSet(model.parameters), servo, {}, args.dt_s};
   input.provenance = read_fitted_parameters(args.parameters, model.name, input.parameters);
@@ -149,7 +141,7 @@ int run(const ExportArgs& args) {
   summary["format"] = args.format;
   summary["out"] = args.out;
   summary["robot"] = model.name;
-  summary["servo"] = to_string(servo);
+  summary["servo"] = servo;
   summary["parameters"] = args.parameters;
   summary["read_back_by"] = args.format == "json" ? "nlohmann::json" : parser_name(args.format);
   if (!log_parameters.empty()) summary["log_parameters"] = log_parameters;

@@ -18,13 +18,14 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/core/random_stream.hpp"
-#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/io/joint_log.hpp"
-#include "motoflex/sim/rollout_log.hpp"
-#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/io/yaml_reader.hpp"
+#include "motoflex/scenario/scenario.hpp"
+#include "motoflex/sim/actuator/servo_law.hpp"
+#include "motoflex/sim/rollout_log.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -51,8 +52,10 @@ int run(const RecordArgs& args) {
   if (digits < 0 || digits > 17) root.at("digits").fail("must be between 0 and 17");
   ScenarioOverrides overrides;
   if (const auto servo = root.find("servo")) {
-    overrides.servo = parse_servo_kind(servo->as_string());
-    if (!overrides.servo) servo->fail("expected motoflex, velocity, ideal or bench");
+    if (!find_servo_law(servo->as_string())) {
+      servo->fail("unknown servo '" + servo->as_string() + "' (" + servo_law_names() + ")");
+    }
+    overrides.servo = servo->as_string();
   }
   if (const auto physics = root.find("physics")) {
     physics->require_keys_within({"flex_sub_bodies", "gear_substeps", "settle_s"});

@@ -6,10 +6,10 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "motoflex/model/effect_library.hpp"
 #include "motoflex/effects/effect_signature.hpp"
-#include "motoflex/fit/fit_run.hpp"
 #include "motoflex/effects/loop_report.hpp"
+#include "motoflex/fit/fit_run.hpp"
+#include "motoflex/model/effect_library.hpp"
 
 namespace motoflex::cli {
 namespace {

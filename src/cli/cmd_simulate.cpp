@@ -13,8 +13,8 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/io/plot_script.hpp"
-#include "motoflex/sim/rollout_log.hpp"
 #include "motoflex/scenario/scenario.hpp"
+#include "motoflex/sim/rollout_log.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -65,8 +65,7 @@ int run(const SimulateArgs& args) {
   meta.robot = scenario.model->name;
   meta.rate_hz = scenario.log_rate_hz;
   meta.motion = scenario.motion_description;
-  meta.origin =
-      "motoflex simulate " + args.scenario + " (servo " + to_string(scenario.rollout.servo) + ")";
+  meta.origin = "motoflex simulate " + args.scenario + " (servo " + scenario.rollout.servo + ")";
   if (result.end != RolloutEnd::kCompleted) {
     meta.notes = std::string("rollout ") + to_string(result.end) + " at " +
                  std::to_string(result.end_time_s) + " s: " + result.end_detail;
@@ -79,7 +78,7 @@ int run(const SimulateArgs& args) {
   nlohmann::ordered_json summary;
   summary["scenario"] = scenario.name;
   summary["robot"] = scenario.model->name;
-  summary["servo"] = to_string(scenario.rollout.servo);
+  summary["servo"] = scenario.rollout.servo;
   summary["frames"] = result.frames_requested;
   summary["frames_completed"] = result.frames_completed;
   summary["end"] = to_string(result.end);

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "commands.hpp"
-#include "motoflex/studies/titan/titan_paper_study.hpp"
 #include "motoflex/core/error.hpp"
+#include "motoflex/studies/titan/titan_paper_study.hpp"
 #include "motoflex/studies/titan/titan_study_config.hpp"
 #include "motoflex/studies/titan/titan_study_report.hpp"
 

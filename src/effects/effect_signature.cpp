@@ -10,6 +10,7 @@
 #include <set>
 
 #include "motoflex/model/effect_library.hpp"
+#include "motoflex/sim/effect_hooks.hpp"
 #include "motoflex/fit/effect_parameters.hpp"
 
 namespace motoflex {

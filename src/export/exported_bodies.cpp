@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/export/servo_export.hpp"
 #include "motoflex/model/body_kinematics.hpp"
 
 namespace motoflex::detail {
@@ -21,7 +22,7 @@ std::vector<ExportedBody> exported_bodies(const ExportInput& input, const Eigen:
     body.inertia_kg_m2 = spec.inertia_kg_m2;
     // Same rule as the rollout (src/sim/rollout.cpp, build_bodies): the body driven by the
     // first actuator carries the bench load.
-    if (input.servo == ServoKind::kBench && !spec.is_static && spec.parent_joint >= 0 &&
+    if (servo_law(input.servo).point_mass_arm && !spec.is_static && spec.parent_joint >= 0 &&
         model.joints[spec.parent_joint].actuator1 == 0) {
       const JointSpec& joint = model.joints[spec.parent_joint];
       Eigen::Vector3d arm = spec.com_W0_m - joint.anchor_W0_m;
@@ -48,18 +49,8 @@ Eigen::Vector3d placement_offset_m(const RobotModel& model,
   return {0.0, 0.0, clearance_m - lowest};
 }
 
-std::string servo_description(ServoKind servo) {
-  switch (servo) {
-    case ServoKind::kMotoflex:
-      return "motoflex: PID -> DC motor -> gear with backlash (seed 001)";
-    case ServoKind::kVelocity:
-      return "velocity: velocity servo with a torque limit (seed 000)";
-    case ServoKind::kIdeal:
-      return "ideal: reaches the next commanded angle in one step, torque limited";
-    case ServoKind::kBench:
-      return "bench: voltage P servo of the pendulum bench (BAM)";
-  }
-  return "?";
+std::string servo_description(const std::string& servo) {
+  return servo_export_rule(servo).description;
 }
 
 }  // namespace motoflex::detail

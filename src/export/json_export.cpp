@@ -27,7 +27,7 @@ std::string export_json(const ExportInput& input) {
   out["format"] = "motoflex-parameters";
   out["format_version"] = 1;
   out["robot"] = input.model.name;
-  out["servo"] = to_string(input.servo);
+  out["servo"] = input.servo;
   nlohmann::ordered_json parameters = nlohmann::ordered_json::object();
   for (std::size_t i = 0; i < registry.size(); ++i) {
     const ParameterSpec& spec = registry.spec(i);

@@ -160,8 +160,7 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
 
   XmlElement mujoco("mujoco");
   mujoco.attribute("model", model.name);
-  mujoco.comment("Exported by motoflex " + std::string(version()) +
-                 " for MuJoCo 2.2.2+ from " +
+  mujoco.comment("Exported by motoflex " + std::string(version()) + " for MuJoCo 2.2.2+ from " +
                  (input.provenance.source_path.empty() ? std::string("defaults")
                                                        : input.provenance.source_path) +
                  "; servo " + detail::servo_description(input.servo) +
@@ -222,7 +221,7 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
         .attribute("data", input.parameters.get(i));
   }
   const FitProvenance& p = input.provenance;
-  std::string provenance = "servo=" + std::string(to_string(input.servo));
+  std::string provenance = "servo=" + input.servo;
   if (!p.source_path.empty()) provenance += " source=" + p.source_path;
   if (p.fitness) provenance += " fitness=" + format_number(*p.fitness);
   if (!p.config_hash.empty()) provenance += " config_hash=" + p.config_hash;

@@ -5,6 +5,7 @@
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/export/mjcf_export.hpp"
+#include "motoflex/export/servo_export.hpp"
 #include "motoflex/sim/rollout.hpp"
 #include "mujoco_model.hpp"
 
@@ -99,7 +100,7 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
     d->qpos[qpos[j]] = first[j];
   }
   mj_forward(m.get(), d.get());
-  const bool next_angle = input.servo == ServoKind::kIdeal;
+  const bool next_angle = servo_export_rule(input.servo).command_is_next_angle;
   for (std::size_t k = 0; k < samples.settle_steps; ++k) {
     for (std::size_t j = 0; j < n; ++j) d->ctrl[actuator[j]] = first[j];
     mj_step(m.get(), d.get());

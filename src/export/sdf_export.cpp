@@ -5,6 +5,7 @@
 #include "exported_bodies.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/export/actuator_export.hpp"
+#include "motoflex/export/servo_export.hpp"
 #include "motoflex/export/urdf_export.hpp"
 #include "xml_writer.hpp"
 
@@ -137,16 +138,16 @@ AxisValues actuated_axis(const ActuatorExport& a) {
   return v;
 }
 
-void add_servo_extension(XmlElement& joint, const ActuatorExport& a, ServoKind servo_kind) {
-  XmlElement& servo = joint.child("motoflex:servo");
-  servo.attribute("joint", a.joint)
+void add_servo_extension(XmlElement& joint, const ActuatorExport& a, const std::string& servo) {
+  XmlElement& element = joint.child("motoflex:servo");
+  element.attribute("joint", a.joint)
       .attribute("kp_nm_per_rad", a.kp_nm_per_rad)
       .attribute("kv_nm_s_per_rad", a.kv_nm_s_per_rad)
       .attribute("effort_nm", a.effort_nm)
       .attribute("armature_kg_m2", a.armature_kg_m2)
       .attribute("reduction", a.reduction);
   // The bench's armature is already in the arm link's inertia (as in motoflex's ODE body).
-  if (servo_kind == ServoKind::kBench) servo.attribute("armature_in_child_link", "true");
+  if (servo_law(servo).point_mass_arm) element.attribute("armature_in_child_link", "true");
 }
 
 void add_joint(XmlElement& model, const ExportInput& input, const JointSpec& spec,

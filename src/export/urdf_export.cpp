@@ -70,7 +70,7 @@ void add_model_extension(TiXmlElement* robot, const ExportInput& input,
                          const std::vector<ActuatorExport>& actuators) {
   TiXmlElement* model = robot->InsertEndChild(TiXmlElement("motoflex:model"))->ToElement();
   model->SetAttribute("robot", input.model.name.c_str());
-  model->SetAttribute("servo", to_string(input.servo));
+  model->SetAttribute("servo", input.servo);
   model->SetAttribute("format_version", "1");
   add_provenance(model, input.provenance);
   for (const ActuatorExport& a : actuators) {
@@ -116,8 +116,7 @@ std::string export_urdf(const ExportInput& input) {
     set(dynamics, "friction", a.friction_nm);
   }
   const std::string note =
-      " Exported by motoflex " + std::string(version()) + " (servo " +
-      to_string(input.servo) +
+      " Exported by motoflex " + std::string(version()) + " (servo " + input.servo +
       "): fitted <dynamics> and <limit effort velocity> on the actuated joints, one "
       "<transmission> each; <motoflex:model> at the end carries every fitted parameter that "
       "URDF has no element for. ";

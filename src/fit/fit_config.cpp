@@ -9,6 +9,7 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/core/text_hash.hpp"
 #include "motoflex/model/effect_library.hpp"
+#include "motoflex/sim/effect_hooks.hpp"
 #include "motoflex/fit/effect_parameters.hpp"
 #include "motoflex/core/atomic_file.hpp"
 #include "motoflex/io/bam_import.hpp"
@@ -427,7 +428,7 @@ FitConfig load_fit_config(const std::string& path, const FitOverrides& overrides
     if (!effect_applies(effect, *config.scenario->model, config.scenario->rollout.servo)) {
       item.fail("effect '" + effect.name + "' has no hook in robot " +
                 config.scenario->model->name + " with servo " +
-                to_string(config.scenario->rollout.servo));
+                config.scenario->rollout.servo);
     }
     std::set<std::string> taken, fixed_names;
     for (const auto& p : config.free) taken.insert(p.targets.begin(), p.targets.end());

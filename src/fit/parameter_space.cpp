@@ -5,33 +5,12 @@
 #include <utility>
 
 namespace motoflex {
-namespace {
-
-// Glob match where '*' stops at dots and "**" does not.
-bool glob_match(const char* pattern, const char* text) {
-  if (*pattern == '\0') return *text == '\0';
-  if (pattern[0] == '*' && pattern[1] == '*') {
-    for (const char* t = text;; ++t) {
-      if (glob_match(pattern + 2, t)) return true;
-      if (*t == '\0') return false;
-    }
-  }
-  if (*pattern == '*') {
-    for (const char* t = text;; ++t) {
-      if (glob_match(pattern + 1, t)) return true;
-      if (*t == '\0' || *t == '.') return false;
-    }
-  }
-  return *text != '\0' && *pattern == *text && glob_match(pattern + 1, text + 1);
-}
-
-}  // namespace
 
 std::vector<std::string> match_parameter_pattern(const ParameterRegistry& registry,
                                                  const std::string& pattern) {
   std::vector<std::string> names;
   for (const auto& spec : registry.specs()) {
-    if (glob_match(pattern.c_str(), spec.name.c_str())) names.push_back(spec.name);
+    if (parameter_pattern_matches(pattern, spec.name)) names.push_back(spec.name);
   }
   return names;
 }

@@ -1,7 +1,5 @@
 #include "motoflex/model/effect_library.hpp"
 
-#include <algorithm>
-
 #include "motoflex/core/error.hpp"
 
 namespace motoflex {
@@ -20,21 +18,17 @@ EffectParameter global(const std::string& name, double probe_fraction, bool log_
 }
 
 std::vector<Effect> build_library() {
-  const std::vector<ServoKind> motor_servos = {ServoKind::kMotoflex, ServoKind::kBench};
-  const std::vector<ServoKind> friction_servos = {ServoKind::kMotoflex, ServoKind::kBench};
   std::vector<Effect> effects;
   effects.push_back({"encoder_offset",
                      "a constant offset of each joint's encoder (calibration error)",
                      "a constant per joint, whatever the motion",
                      {per_joint("encoder_offset_rad", 0.05)},
-                     {},
                      false,
                      0});
   effects.push_back({"encoder_scale",
                      "an encoder or gear-ratio scale error of each joint",
                      "proportional to the joint angle",
                      {per_joint("encoder_scale", 0.05)},
-                     {},
                      false,
                      0});
   effects.push_back({"sensor_delay",
@@ -42,21 +36,18 @@ std::vector<Effect> build_library() {
                      "minus the joint velocity times the delay; the cross-correlation of "
                      "measured and simulated angles peaks at a positive lag",
                      {global("sensor.delay_s", 0.05)},
-                     {},
                      false,
                      0});
   effects.push_back({"coulomb_friction",
                      "velocity-independent dry friction in each joint",
                      "a step with the sign of the joint velocity",
                      {per_joint("friction_nm", 0.05)},
-                     friction_servos,
                      false,
                      0});
   effects.push_back({"viscous_friction",
                      "friction proportional to the joint velocity",
                      "proportional to the joint velocity, filtered by the servo loop",
                      {per_joint("viscous_nm_s_per_rad", 0.05)},
-                     friction_servos,
                      false,
                      0});
   effects.push_back(
@@ -64,28 +55,24 @@ std::vector<Effect> build_library() {
        "stiction: extra breakaway friction at low joint speed",
        "large near velocity reversals and standstill, vanishing at speed",
        {per_joint("stribeck_nm", 0.05), per_joint("stribeck_velocity_rad_s", 0.0, true)},
-       friction_servos,
        false,
        0});
   effects.push_back({"load_friction",
                      "friction growing with the transmitted torque (BAM's M3-M6 family)",
                      "a step with the sign of the joint velocity, scaled by the load torque",
                      {per_joint("load_friction", 0.05)},
-                     friction_servos,
                      false,
                      0});
   effects.push_back({"backlash",
                      "play in the gear train",
                      "a dead band at every reversal of the load torque",
                      {{"gear.*.backlash_rad", true, true, 1.0e-6, 0.05, 0.5}},
-                     {ServoKind::kMotoflex},
                      false,
                      0});
   effects.push_back({"joint_compliance",
                      "elasticity of the gear train",
                      "proportional to the load torque, with a resonance of the servo loop",
                      {{"gear.*.spring_nm_per_rad", true, true, kNaN, kNaN, -0.3}},
-                     {ServoKind::kMotoflex},
                      false,
                      0});
   effects.push_back({"link_flexibility",
@@ -93,35 +80,30 @@ std::vector<Effect> build_library() {
                      "oscillations under load and a load-dependent offset of the legs",
                      {global("flex.spring_nm_per_rad", -0.3, true),
                       global("flex.damping_nm_s_per_rad", 0.0, true)},
-                     {},
                      false,
                      2});
   effects.push_back({"resistance_drift",
                      "motor resistance rising over the run (winding heat)",
                      "a servo error that grows with time and with the load",
                      {global("motor.R_drift_per_s", 0.05)},
-                     motor_servos,
                      false,
                      0});
   effects.push_back({"supply_sag",
                      "battery voltage falling with the total motor current",
                      "weaker servos when many joints draw current at once",
                      {global("motor.supply_sag_ohm", 0.05)},
-                     {ServoKind::kMotoflex},
                      false,
                      0});
   effects.push_back({"ground_compliance",
                      "softer ground contact (contact ERP/CFM)",
                      "sinking and rebound of the stance leg at every touchdown",
                      {global("contact.soft_cfm", 0.2, true), global("contact.soft_erp", 0.0)},
-                     {},
                      true,
                      0});
   effects.push_back({"foot_slip",
                      "feet sliding on the ground (contact slip and friction)",
                      "drift of the stance leg angles during single support",
                      {global("contact.slip", 0.2, true), global("contact.mu", 0.0)},
-                     {},
                      true,
                      0});
   return effects;
@@ -144,21 +126,6 @@ const Effect& find_effect(const std::string& name, const std::string& source, in
     known += (known.empty() ? "" : ", ") + effect.name;
   }
   throw InputError(source, line, field, "unknown effect '" + name + "' (known: " + known + ")");
-}
-
-bool effect_applies(const Effect& effect, const RobotModel& model, ServoKind servo) {
-  if (!effect.servos.empty() &&
-      std::find(effect.servos.begin(), effect.servos.end(), servo) == effect.servos.end()) {
-    return false;
-  }
-  if (effect.needs_feet) {
-    bool has_feet = false;
-    for (const auto& body : model.bodies) {
-      for (const auto& box : body.boxes) has_feet = has_feet || box.is_foot;
-    }
-    if (!has_feet) return false;
-  }
-  return true;
 }
 
 }  // namespace motoflex

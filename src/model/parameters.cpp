@@ -15,6 +15,31 @@
 namespace motoflex {
 namespace {
 
+bool glob_match(const char* pattern, const char* text) {
+  if (*pattern == '\0') return *text == '\0';
+  if (pattern[0] == '*' && pattern[1] == '*') {
+    for (const char* t = text;; ++t) {
+      if (glob_match(pattern + 2, t)) return true;
+      if (*t == '\0') return false;
+    }
+  }
+  if (*pattern == '*') {
+    for (const char* t = text;; ++t) {
+      if (glob_match(pattern + 1, t)) return true;
+      if (*t == '\0' || *t == '.') return false;
+    }
+  }
+  return *text != '\0' && *pattern == *text && glob_match(pattern + 1, text + 1);
+}
+
+}  // namespace
+
+bool parameter_pattern_matches(const std::string& pattern, const std::string& name) {
+  return glob_match(pattern.c_str(), name.c_str());
+}
+
+namespace {
+
 // Longest suffix first, so "_nm_s_per_rad" wins over "_per_rad" and "_rad".
 constexpr std::array<std::pair<const char*, const char*>, 20> kUnitSuffixes = {{
     {"_nm_s_per_rad", "N·m·s/rad"},

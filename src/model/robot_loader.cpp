@@ -37,7 +37,8 @@ struct RobotYaml {
   std::string root_link;
   std::string torso_link;
   bool fixed_base = false;
-  ServoKind servo = ServoKind::kIdeal;
+  std::string servo;
+  int servo_line = 0;
   struct Actuated {
     std::string joint;
     std::string group;
@@ -65,10 +66,8 @@ RobotYaml read_robot_yaml(const YamlValue& root) {
   out.torso_link = root.get_string("torso_link", out.root_link);
   out.fixed_base = root.get_bool("fixed_base", false);
   const YamlValue servo = root.at("servo");
-  const auto kind = parse_servo_kind(servo.as_string());
-  if (!kind)
-    servo.fail("unknown servo '" + servo.as_string() + "' (motoflex|velocity|ideal|bench)");
-  out.servo = *kind;
+  out.servo = servo.as_string();
+  out.servo_line = servo.line();
   for (const YamlValue& item : root.at("actuated_joints").items()) {
     item.require_keys_within({"joint", "group"});
     out.actuated.push_back({item.at("joint").as_string(), item.at("group").as_string(), item});
@@ -207,6 +206,8 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
   model.directory = robot_dir;
   model.urdf_path = spec.urdf_path;
   model.default_servo = spec.servo;
+  model.source.yaml_path = yaml_path;
+  model.source.servo_line = spec.servo_line;
   model.structure = structure;
   model.fixed_base = spec.fixed_base;
   model.max_tilt_rad = spec.max_tilt_rad;
@@ -333,22 +334,10 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
     model.actuators.push_back(actuator);
   }
 
-  // --- parameters ------------------------------------------------------------------------------
+  // --- parameters (their names are checked against the servo laws in the sim layer) ---------
   const YamlValue parameters = root.at("parameters");
-  const std::set<std::string> known = detail::known_parameter_names(model);
+  model.source.parameters_line = parameters.line();
   for (const auto& [name, value] : parameters.entries()) {
-    if (!known.count(name)) {
-      std::string hint;
-      int best = 4;
-      for (const auto& candidate : known) {
-        const int d = edit_distance(name, candidate);
-        if (d < best) {
-          best = d;
-          hint = candidate;
-        }
-      }
-      value.fail("unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
-    }
     const auto triple = value.as_double_list();
     if (triple.size() != 3) value.fail("expected [default, lower, upper]");
     if (!(triple[1] < triple[2])) value.fail("lower bound must be below the upper bound");
@@ -356,21 +345,12 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
       value.fail("default must lie within [lower, upper]");
     }
     model.parameters.add({name, unit_from_parameter_name(name), triple[0], triple[1], triple[2]});
+    model.source.parameter_lines[name] = value.line();
   }
   for (const auto& spec : detail::effect_parameter_specs(model)) {
     if (!model.parameters.contains(spec.name)) model.parameters.add(spec);
   }
-  for (const auto& name : required_parameters(model, model.default_servo)) {
-    if (!model.parameters.contains(name)) {
-      parameters.fail("missing '" + name + "', required by servo '" +
-                      std::string(to_string(model.default_servo)) + "'");
-    }
-  }
   return model;
-}
-
-std::vector<std::string> required_parameters(const RobotModel& model, ServoKind servo) {
-  return detail::required_parameter_names(model, servo);
 }
 
 }  // namespace motoflex

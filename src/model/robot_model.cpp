@@ -2,28 +2,6 @@
 
 namespace motoflex {
 
-std::optional<ServoKind> parse_servo_kind(const std::string& text) {
-  if (text == "motoflex") return ServoKind::kMotoflex;
-  if (text == "velocity") return ServoKind::kVelocity;
-  if (text == "ideal") return ServoKind::kIdeal;
-  if (text == "bench") return ServoKind::kBench;
-  return std::nullopt;
-}
-
-const char* to_string(ServoKind kind) {
-  switch (kind) {
-    case ServoKind::kMotoflex:
-      return "motoflex";
-    case ServoKind::kVelocity:
-      return "velocity";
-    case ServoKind::kIdeal:
-      return "ideal";
-    case ServoKind::kBench:
-      return "bench";
-  }
-  return "?";
-}
-
 std::optional<std::size_t> RobotModel::actuator_index(const std::string& joint_name) const {
   for (std::size_t i = 0; i < actuators.size(); ++i) {
     if (actuators[i].name == joint_name) return i;

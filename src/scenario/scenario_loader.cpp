@@ -5,11 +5,11 @@
 #include "excitation_scenario_motion.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
+#include "motoflex/io/yaml_reader.hpp"
+#include "motoflex/motion/keyframe_motion.hpp"
 #include "motoflex/motion/log_commands.hpp"
 #include "motoflex/scenario/scenario.hpp"
-#include "motoflex/io/yaml_reader.hpp"
-#include "motoflex/model/robot_loader.hpp"
-#include "motoflex/motion/keyframe_motion.hpp"
+#include "motoflex/sim/robot_parameter_check.hpp"
 #include "nao_scenario_motion.hpp"
 #include "titan_scenario_motion.hpp"
 
@@ -83,20 +83,16 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   if (!std::filesystem::exists(std::filesystem::path(robot_dir) / "robot.yaml")) {
     robot_field.fail("no robot.yaml in '" + robot_dir + "'");
   }
-  auto model = std::make_shared<RobotModel>(load_robot_model(robot_dir, structure));
+  auto model = std::make_shared<RobotModel>(load_robot(robot_dir, structure));
 
   rollout.servo = model->default_servo;
   if (const auto servo = root.find("servo")) {
-    const auto parsed = parse_servo_kind(servo->as_string());
-    if (!parsed) servo->fail("expected motoflex, velocity, ideal or bench");
-    rollout.servo = *parsed;
+    rollout.servo = servo->as_string();
+    check_servo_parameters(*model, rollout.servo, path, servo->line(), "servo");
   }
-  if (overrides.servo) rollout.servo = *overrides.servo;
-  for (const auto& name : required_parameters(*model, rollout.servo)) {
-    if (!model->parameters.contains(name)) {
-      root.fail("robot '" + model->name + "' does not declare '" + name + "', needed by servo '" +
-                to_string(rollout.servo) + "' (add it to robot.yaml)");
-    }
+  if (overrides.servo) {
+    rollout.servo = *overrides.servo;
+    check_servo_parameters(*model, rollout.servo, "", 0, "--servo");
   }
 
   Scenario scenario{path,    root.get_string("name", std::filesystem::path(path).stem().string()),

@@ -23,10 +23,10 @@ double read_rate_hz(const YamlValue& spec) {
 }
 
 TitanCommandOptions read_command_options(const YamlValue& spec, const RobotModel& model,
-                                         const ParameterSet& parameters, ServoKind servo) {
+                                         const ParameterSet& parameters, const std::string& servo) {
   TitanCommandOptions options;
   options.rate_hz = read_rate_hz(spec);
-  const bool velocity = servo == ServoKind::kVelocity;
+  const bool velocity = servo == "velocity";
   const bool lead = spec.get_bool("servo_lead", velocity);
   if (lead && !velocity) spec.at("servo_lead").fail("needs the velocity servo");
   if (lead) options.lead_gain_per_s = velocity_servo_gains_per_s(model, parameters);
@@ -38,7 +38,7 @@ TitanCommandOptions read_command_options(const YamlValue& spec, const RobotModel
 std::optional<TitanScenarioMotion> titan_motion_from_yaml(const YamlValue& motion,
                                                           const RobotModel& model,
                                                           const ParameterSet& parameters,
-                                                          ServoKind servo) {
+                                                          const std::string& servo) {
   std::optional<YamlValue> spec;
   for (const char* key : {"titan_crawl", "titan_updown", "titan_stand"}) {
     if (const auto found = motion.find(key)) spec = found;

@@ -29,6 +29,6 @@ struct TitanScenarioMotion {
 std::optional<TitanScenarioMotion> titan_motion_from_yaml(const YamlValue& motion,
                                                           const RobotModel& model,
                                                           const ParameterSet& parameters,
-                                                          ServoKind servo);
+                                                          const std::string& servo);
 
 }  // namespace motoflex::detail

@@ -9,14 +9,11 @@
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/model/body_kinematics.hpp"
-#include "motoflex/sim/actuator/dc_motor.hpp"
-#include "motoflex/sim/actuator/gear_train.hpp"
-#include "motoflex/sim/actuator/pid.hpp"
-#include "motoflex/sim/actuator/servo_laws.hpp"
+#include "motoflex/sim/actuator/servo_law.hpp"
 #include "motoflex/sim/joint_encoder.hpp"
 #include "motoflex/sim/ode_runtime.hpp"
 #include "ode_axis.hpp"
-#include "motoflex/sim/resolved_parameters.hpp"
+#include "resolved_parameters.hpp"
 #include "rollout_ode_access.hpp"
 
 namespace motoflex {
@@ -67,9 +64,18 @@ const char* to_string(RolloutEnd end) {
   return "?";
 }
 
+const ServoLawInfo& law_for(const RolloutOptions& options) {
+  const ServoLawInfo* law = find_servo_law(options.servo);
+  if (law == nullptr) {
+    throw ModelError("unknown servo '" + options.servo + "' (" + servo_law_names() + ")");
+  }
+  return *law;
+}
+
 struct Rollout::Impl {
   const RobotModel& model;
   RolloutOptions options;
+  const ServoLawInfo& law;
   detail::ResolvedParameters params;
 
   dWorldID world = nullptr;
@@ -98,20 +104,14 @@ struct Rollout::Impl {
   std::vector<double> joint_torque1, joint_torque2;  // per model joint, accumulated each step
   std::vector<std::size_t> flex_joints;              // model joint indices
   double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs
-  std::vector<Pid> pids;
-  std::vector<DcMotor> motors;
-  std::vector<GearTrain> gears;
+  std::vector<std::unique_ptr<ServoLaw>> servos;     // per actuator
   std::vector<JointEncoder> encoders;
   std::vector<double> applied_torque_nm;
   dContact contact_template{};
   double elapsed_s = 0.0;  // since the rollout was created (settling included)
-  bool motor_operating_point_varies = false;
 
   Impl(const RobotModel& m, const ParameterSet& values, const RolloutOptions& o)
-      : model(m), options(o), params(detail::resolve_parameters(m, values, o.servo)) {
-    motor_operating_point_varies =
-        params.motor_resistance_drift_per_s != 0.0 || params.supply_sag_ohm != 0.0;
-  }
+      : model(m), options(o), law(law_for(o)), params(detail::resolve_parameters(m, values, law)) {}
 
   ~Impl() {
     if (world != nullptr) dWorldSetStepThreadingImplementation(world, nullptr, nullptr);
@@ -125,7 +125,7 @@ struct Rollout::Impl {
   void build_world();
   void build_bodies();
   void build_joints();
-  void build_actuators();
+  void build_actuators(const ParameterSet& values);
   void add_damping_row(std::size_t actuator, double damping_nm_s_per_rad);
   void place(const std::vector<double>& pose_rad);
   void apply_servos(const double* now_rad, const double* next_rad);
@@ -170,7 +170,7 @@ void Rollout::Impl::build_bodies() {
       double mass = spec.mass_kg;
       Eigen::Matrix3d inertia = spec.inertia_kg_m2;
       // Bench: the arm is a point mass at bench.length_m from the axis plus the armature.
-      if (options.servo == ServoKind::kBench && spec.parent_joint >= 0 &&
+      if (law.point_mass_arm && spec.parent_joint >= 0 &&
           model.joints[spec.parent_joint].actuator1 == 0) {
         const JointSpec& joint = model.joints[spec.parent_joint];
         Eigen::Vector3d arm = spec.com_W0_m - joint.anchor_W0_m;
@@ -287,9 +287,10 @@ void Rollout::Impl::build_joints() {
   joint_torque2.assign(model.joints.size(), 0.0);
 }
 
-void Rollout::Impl::build_actuators() {
+void Rollout::Impl::build_actuators(const ParameterSet& values) {
   const std::size_t n = model.actuators.size();
   applied_torque_nm.assign(n, 0.0);
+  const ParameterReader reader(values, law.name);
   for (std::size_t i = 0; i < n; ++i) {
     const ActuatorSpec& spec = model.actuators[i];
     detail::OdeAxis axis;
@@ -300,14 +301,9 @@ void Rollout::Impl::build_actuators() {
     axes.push_back(axis);
     encoders.emplace_back(params.encoder, options.dt_s,
                           RandomStream({options.seed, kEncoderNoisePurpose, i}));
-    if (options.servo == ServoKind::kMotoflex) {
-      const auto& p = params.actuators[i];
-      pids.emplace_back(p.pid, options.dt_s);
-      motors.emplace_back(p.motor, options.dt_s);
-      gears.emplace_back(p.gear, options.dt_s, options.gear_substeps);
-      if (p.back_emf_damping_nm_s_per_rad > 0.0)
-        add_damping_row(i, p.back_emf_damping_nm_s_per_rad);
-    }
+    servos.push_back(law.create({model, i, reader, options.dt_s, options.gear_substeps}));
+    const double damping_nm_s_per_rad = servos.back()->damping_row_nm_s_per_rad();
+    if (damping_nm_s_per_rad > 0.0) add_damping_row(i, damping_nm_s_per_rad);
   }
 }
 
@@ -378,71 +374,33 @@ void Rollout::Impl::place(const std::vector<double>& pose_rad) {
 }
 
 double Rollout::Impl::encoder_input(std::size_t i) const {
-  const auto& p = params.actuators[i];
-  return p.encoder_scale * axes[i].angle_rad() + p.encoder_offset_rad;
+  const detail::EncoderCalibration& calibration = params.encoders[i];
+  return calibration.scale * axes[i].angle_rad() + calibration.offset_rad;
 }
 
 void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) {
   const std::size_t n = axes.size();
-  // Motor effects: winding heating (R drift) and battery sag from last step's currents.
-  double supply_now_v = 0.0;
-  double resistance_scale = 1.0;
-  if (motor_operating_point_varies) {
-    double total_current_a = 0.0;
-    for (const DcMotor& motor : motors) total_current_a += std::abs(motor.current_a());
-    supply_now_v = std::max(
-        0.0, params.actuators.front().motor.supply_v - params.supply_sag_ohm * total_current_a);
-    resistance_scale = std::max(1e-3, 1.0 + params.motor_resistance_drift_per_s * elapsed_s);
-  }
+  // The robot's supply sags with the current every motor drew in the last step.
+  double total_current_a = 0.0;
+  for (const auto& servo : servos) total_current_a += std::abs(servo->current_a());
   std::fill(joint_torque1.begin(), joint_torque1.end(), 0.0);
   std::fill(joint_torque2.begin(), joint_torque2.end(), 0.0);
+  ServoInput input;
+  input.elapsed_s = elapsed_s;
+  input.settle_s = options.settle_s;
+  input.total_current_a = total_current_a;
   for (std::size_t i = 0; i < n; ++i) {
     const detail::OdeAxis& axis = axes[i];
-    const double q = axis.angle_rad();
-    const double w = axis.rate_rad_s();
-    double torque = 0.0;
-    switch (options.servo) {
-      case ServoKind::kMotoflex: {
-        const auto& p = params.actuators[i];
-        // seed 001, Algorithm 1 (PID → clamp → RL → K_t, B·ω_m) then Algorithm 2 (gear).
-        if (motor_operating_point_varies) {
-          motors[i].set_operating_point(supply_now_v, p.motor.resistance_ohm * resistance_scale);
-        }
-        const double volts = pids[i].update(now_rad[i] - q);
-        const double motor_torque = motors[i].update(volts, w * p.gear.ratio);
-        torque = gears[i].update(motor_torque);
-        const MotorCommand friction = joint_friction(p.friction, w, torque);
-        axis.set_motor(friction.velocity_rad_s, friction.fmax_nm);
-        break;
-      }
-      case ServoKind::kVelocity: {
-        const MotorCommand command = velocity_servo(params.actuators[i].velocity, now_rad[i], q);
-        axis.set_motor(command.velocity_rad_s, command.fmax_nm);
-        torque = std::numeric_limits<double>::quiet_NaN();
-        break;
-      }
-      case ServoKind::kIdeal: {
-        const MotorCommand command = ideal_servo(params.ideal, next_rad[i], q, options.dt_s);
-        axis.set_motor(command.velocity_rad_s, command.fmax_nm);
-        torque = std::numeric_limits<double>::quiet_NaN();
-        break;
-      }
-      case ServoKind::kBench: {
-        const auto& p = params.actuators[i];
-        BenchServoParams bench = p.bench;
-        bench.resistance_ohm *= 1.0 + params.motor_resistance_drift_per_s * elapsed_s;
-        // A released H-bridge (BAM lift_and_drop): no drive and no back-EMF braking.
-        const bool enabled = elapsed_s - options.settle_s < bench.torque_off_s;
-        torque = bench_servo_torque_nm(bench, now_rad[i], q, w, enabled);
-        const MotorCommand friction = joint_friction(p.friction, w, torque);
-        axis.set_motor(friction.velocity_rad_s, friction.fmax_nm);
-        break;
-      }
-    }
-    applied_torque_nm[i] = torque;
-    if (std::isfinite(torque)) {
+    input.command_rad = now_rad[i];
+    input.next_command_rad = next_rad[i];
+    input.angle_rad = axis.angle_rad();
+    input.rate_rad_s = axis.rate_rad_s();
+    const ServoOutput out = servos[i]->step(input);
+    axis.set_motor(out.row.velocity_rad_s, out.row.fmax_nm);
+    applied_torque_nm[i] = out.torque_nm;
+    if (std::isfinite(out.torque_nm)) {
       const ActuatorSpec& spec = model.actuators[i];
-      (spec.axis == 1 ? joint_torque1 : joint_torque2)[spec.joint] += axis.sign * torque;
+      (spec.axis == 1 ? joint_torque1 : joint_torque2)[spec.joint] += axis.sign * out.torque_nm;
     }
   }
   for (std::size_t j = 0; j < joints.size(); ++j) {
@@ -539,7 +497,7 @@ Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
   impl_->build_world();
   impl_->build_bodies();
   impl_->build_joints();
-  impl_->build_actuators();
+  impl_->build_actuators(parameters);
   impl_->contact_feedback.resize(impl_->foot_geoms.size() * kMaxContactsPerFoot);
   impl_->contact_owner.resize(impl_->contact_feedback.size());
   impl_->foot_force_n.assign(impl_->foot_geoms.size(), Eigen::Vector3d::Zero());

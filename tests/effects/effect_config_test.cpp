@@ -6,12 +6,12 @@
 #include <algorithm>
 
 #include "cli/cli_test_support.hpp"
-#include "fit/fit_test_support.hpp"
 #include "effect_test_support.hpp"
+#include "fit/fit_test_support.hpp"
 #include "motoflex/core/error.hpp"
-#include "motoflex/model/effect_library.hpp"
 #include "motoflex/effects/effect_loop.hpp"
 #include "motoflex/fit/fit_run.hpp"
+#include "motoflex/model/effect_library.hpp"
 
 namespace motoflex::testing {
 namespace {

@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_test_support.hpp"
-#include "fit/fit_test_support.hpp"
 #include "effect_test_support.hpp"
+#include "fit/fit_test_support.hpp"
 #include "motoflex/effects/effect_loop.hpp"
 #include "motoflex/fit/fit_run.hpp"
 

@@ -8,8 +8,8 @@
 
 #include "cli/cli_test_support.hpp"
 #include "effect_test_support.hpp"
-#include "motoflex/model/effect_library.hpp"
 #include "motoflex/effects/effect_signature.hpp"
+#include "motoflex/model/effect_library.hpp"
 
 namespace motoflex::testing {
 namespace {

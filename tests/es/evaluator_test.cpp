@@ -25,8 +25,10 @@ class NoisyRastrigin : public Problem {
   void evaluate_batch(const std::vector<std::vector<double>>& xs, std::vector<double>& fitness,
                       const EvaluationContext& context) override {
     for (std::size_t k = 0; k < xs.size(); ++k) {
-      motoflex::RandomStream noise = es_stream(99, context.generation, context.first_individual + k, Purpose::kTest);
-      fitness[k] = testing::benchmark(testing::Function::kRastrigin, xs[k]) + 0.1 * noise.normal_libm();
+      motoflex::RandomStream noise =
+          es_stream(99, context.generation, context.first_individual + k, Purpose::kTest);
+      fitness[k] =
+          testing::benchmark(testing::Function::kRastrigin, xs[k]) + 0.1 * noise.normal_libm();
     }
   }
 };

@@ -9,13 +9,13 @@
 namespace motoflex {
 namespace {
 
-ExportInput defaults(const RobotModel& model, ServoKind servo) {
+ExportInput defaults(const RobotModel& model, const std::string& servo) {
   return ExportInput{model, ParameterSet(model.parameters), servo, {}, 0.001};
 }
 
 TEST(ActuatorExport, MotoflexServoLinearisedAtTheNaoDefaults) {
   const auto model = testing::load_robot("nao");
-  const auto actuators = export_actuators(defaults(*model, ServoKind::kMotoflex));
+  const auto actuators = export_actuators(defaults(*model, "motoflex"));
   ASSERT_EQ(actuators.size(), 10u);
   // LHipRoll: gear A (σ = 201.3), MoToFlex Normal.gnm values (scenarios/robots/nao/README.md).
   const ActuatorExport& roll = actuators[0];
@@ -42,7 +42,7 @@ TEST(ActuatorExport, MotoflexServoLinearisedAtTheNaoDefaults) {
 
 TEST(ActuatorExport, BenchServoLinearisedAtTheXl330Defaults) {
   const auto model = testing::load_robot("servo_pendulum");
-  const auto a = export_actuators(defaults(*model, ServoKind::kBench)).at(0);
+  const auto a = export_actuators(defaults(*model, "bench")).at(0);
   const double kt = 0.6, r = 2.6, u = 7.4;
   EXPECT_NEAR(a.kp_nm_per_rad, kt / r * u * 0.0028774 * 400.0, 1e-12);
   EXPECT_EQ(a.kv_nm_s_per_rad, 0.0);
@@ -55,7 +55,7 @@ TEST(ActuatorExport, BenchServoLinearisedAtTheXl330Defaults) {
 
 TEST(ActuatorExport, IdealServoIsAStiffDeadbeatPd) {
   const auto model = testing::load_robot("nao");
-  const ExportInput input = defaults(*model, ServoKind::kIdeal);
+  const ExportInput input = defaults(*model, "ideal");
   const auto actuators = export_actuators(input);
   for (std::size_t i = 0; i < actuators.size(); ++i) {
     const ActuatorExport& a = actuators[i];

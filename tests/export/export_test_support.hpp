@@ -85,11 +85,12 @@ struct Fixture {
   std::unique_ptr<ExportInput> input;
 };
 
-inline Fixture fitted_fixture(const std::string& robot, ServoKind servo, int flex_sub_bodies = 1) {
+inline Fixture fitted_fixture(const std::string& robot, const std::string& servo,
+                              int flex_sub_bodies = 1) {
   Fixture f;
   f.model = load_robot(robot, flex_sub_bodies);
   const auto dir = std::filesystem::temp_directory_path() /
-                   ("motoflex_export_" + robot + "_" + to_string(servo) + "_" +
+                   ("motoflex_export_" + robot + "_" + servo + "_" +
                     std::to_string(flex_sub_bodies) + "_" + std::to_string(::getpid()));
   const std::string best = write_best_json(dir, *f.model, fitted_values(*f.model));
   f.input = std::make_unique<ExportInput>(

@@ -17,7 +17,7 @@ namespace {
 using testing::fitted_fixture;
 
 TEST(JsonExport, CarriesEveryParameterWithUnitAndTheProvenance) {
-  const auto f = fitted_fixture("nao", ServoKind::kMotoflex);
+  const auto f = fitted_fixture("nao", "motoflex");
   const nlohmann::json out = nlohmann::json::parse(export_json(*f.input));
   EXPECT_EQ(out["format"], "motoflex-parameters");
   EXPECT_EQ(out["robot"], "nao");
@@ -60,7 +60,7 @@ TEST(JsonExport, PlainParameterFileHasNoFitProvenance) {
   const auto dir = testing::fresh_export_dir("json_plain");
   const std::string path = (dir / "params.json").string();
   std::ofstream(path) << R"({"bench.Kt_nm_per_a": 0.35, "bench.R_ohm": 2.4})";
-  ExportInput input{*model, ParameterSet(model->parameters), ServoKind::kBench, {}, 0.001};
+  ExportInput input{*model, ParameterSet(model->parameters), "bench", {}, 0.001};
   input.provenance = read_fitted_parameters(path, model->name, input.parameters);
   const nlohmann::json out = nlohmann::json::parse(export_json(input));
   EXPECT_EQ(out["parameters"]["bench.Kt_nm_per_a"]["value"].get<double>(), 0.35);

@@ -68,7 +68,7 @@ double numeric(const mjModel& m, const std::string& name) {
 }
 
 TEST(MjcfExport, NaoIsFreeFloatingWithTheFittedJointValues) {
-  const auto f = testing::fitted_fixture("nao", ServoKind::kMotoflex);
+  const auto f = testing::fitted_fixture("nao", "motoflex");
   const std::string text = export_mjcf(*f.input);
   EXPECT_EQ(mujoco_errors(text), "");
   const ModelPtr m = load(text, "nao");
@@ -93,7 +93,7 @@ TEST(MjcfExport, NaoIsFreeFloatingWithTheFittedJointValues) {
 }
 
 TEST(MjcfExport, NaoStandsOnTheFloorAtItsInitialClearance) {
-  const auto f = testing::fitted_fixture("nao", ServoKind::kIdeal);
+  const auto f = testing::fitted_fixture("nao", "ideal");
   const ModelPtr m = load(export_mjcf(*f.input), "nao_stand");
   ASSERT_TRUE(m);
   mjData* d = mj_makeData(m.get());
@@ -114,7 +114,7 @@ TEST(MjcfExport, NaoStandsOnTheFloorAtItsInitialClearance) {
 }
 
 TEST(MjcfExport, PendulumIsAFixedBaseBenchWithThePointMassAndArmature) {
-  const auto f = testing::fitted_fixture("servo_pendulum", ServoKind::kBench);
+  const auto f = testing::fitted_fixture("servo_pendulum", "bench");
   const ModelPtr m = load(export_mjcf(*f.input), "pendulum");
   ASSERT_TRUE(m);
   EXPECT_EQ(m->nq, 1);
@@ -142,7 +142,7 @@ TEST(MjcfExport, PendulumIsAFixedBaseBenchWithThePointMassAndArmature) {
 }
 
 TEST(MjcfExport, FlexibleLinksAndHeldTorsoCompile) {
-  const auto f = testing::fitted_fixture("nao", ServoKind::kMotoflex, 2);
+  const auto f = testing::fitted_fixture("nao", "motoflex", 2);
   MjcfOptions options;
   options.weld_root = true;
   options.clearance_m = 0.1;

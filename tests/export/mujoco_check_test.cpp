@@ -33,7 +33,7 @@ void print(const char* what, const MujocoComparison& c) {
 }
 
 TEST(MujocoCheck, PendulumBenchServoAgreesWithinOneDegree) {
-  const auto f = testing::fitted_fixture("servo_pendulum", ServoKind::kBench);
+  const auto f = testing::fitted_fixture("servo_pendulum", "bench");
   const CommandTrajectory commands = five_seconds_of("bench/chirp.yaml");
   const MujocoComparison c = compare_with_mujoco(*f.input, commands, MujocoCheckOptions{});
   print("pendulum, bench servo", c);
@@ -50,7 +50,7 @@ TEST(MujocoCheck, PendulumBenchServoAgreesWithinOneDegree) {
 }
 
 TEST(MujocoCheck, HeldNaoWithIdealServosAgreesWithinOneDegree) {
-  const auto f = testing::fitted_fixture("nao", ServoKind::kIdeal);
+  const auto f = testing::fitted_fixture("nao", "ideal");
   MujocoCheckOptions options;
   options.hold_torso = true;
   options.settle_s = 0.5;
@@ -73,14 +73,14 @@ TEST(MujocoCheck, HeldNaoWithTheMotoflexServo) {
   // row with CFM = 1/(B·σ²); MuJoCo: joint damping), so what the export drops (backlash, gear
   // spring and mass, PID integral, inductance) costs well under a degree, at the MoToFlex values
   // and with B at its lower bound alike.
-  const auto defaults = testing::fitted_fixture("nao", ServoKind::kMotoflex);
+  const auto defaults = testing::fitted_fixture("nao", "motoflex");
   const MujocoComparison fitted = compare_with_mujoco(*defaults.input, commands, options);
   print("held Nao, motoflex servo, MoToFlex values", fitted);
   EXPECT_LT(fitted.rms_deg, 1.0);
   for (std::size_t j = 0; j < fitted.joints.size(); ++j) {
     EXPECT_LT(fitted.rms_deg_per_joint[j], 1.5) << fitted.joints[j];
   }
-  auto f = testing::fitted_fixture("nao", ServoKind::kMotoflex);
+  auto f = testing::fitted_fixture("nao", "motoflex");
   f.input->parameters.set("gear.A.motor_viscous_nm_s_per_rad", 2.6558e-5);
   f.input->parameters.set("gear.B.motor_viscous_nm_s_per_rad", 2.9675e-5);
   const MujocoComparison low_b = compare_with_mujoco(*f.input, commands, options);

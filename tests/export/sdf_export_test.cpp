@@ -64,7 +64,7 @@ void expect_joint_values(const ExportInput& input, const sdf::Model& model) {
 }
 
 TEST(SdfExport, NaoLoadsWithoutErrorsAndKeepsTheFittedValues) {
-  const auto f = testing::fitted_fixture("nao", ServoKind::kMotoflex);
+  const auto f = testing::fitted_fixture("nao", "motoflex");
   Loaded loaded;
   load(*f.input, loaded);
   ASSERT_NE(loaded.model, nullptr);
@@ -114,7 +114,7 @@ TEST(SdfExport, NaoLoadsWithoutErrorsAndKeepsTheFittedValues) {
 }
 
 TEST(SdfExport, FlexibleLinksBecomeSpringJoints) {
-  const auto f = testing::fitted_fixture("nao", ServoKind::kMotoflex, 2);
+  const auto f = testing::fitted_fixture("nao", "motoflex", 2);
   Loaded loaded;
   load(*f.input, loaded);
   ASSERT_NE(loaded.model, nullptr);
@@ -136,7 +136,7 @@ TEST(SdfExport, FlexibleLinksBecomeSpringJoints) {
 }
 
 TEST(SdfExport, PendulumIsWeldedToTheWorldAndCarriesTheBenchLoad) {
-  const auto f = testing::fitted_fixture("servo_pendulum", ServoKind::kBench);
+  const auto f = testing::fitted_fixture("servo_pendulum", "bench");
   Loaded loaded;
   load(*f.input, loaded);
   ASSERT_NE(loaded.model, nullptr);

@@ -76,7 +76,7 @@ void expect_round_trip(const ExportInput& input) {
 }
 
 TEST(UrdfExport, NaoMotoflexServoRoundTripsThroughUrdfdom) {
-  const auto f = testing::fitted_fixture("nao", ServoKind::kMotoflex);
+  const auto f = testing::fitted_fixture("nao", "motoflex");
   expect_round_trip(*f.input);
   // Spot check against the parameter names: LKneePitch uses gear B.
   const urdf::ModelInterfaceSharedPtr exported = urdf::parseURDF(export_urdf(*f.input));
@@ -91,12 +91,12 @@ TEST(UrdfExport, NaoMotoflexServoRoundTripsThroughUrdfdom) {
 }
 
 TEST(UrdfExport, PendulumBenchServoRoundTripsThroughUrdfdom) {
-  const auto f = testing::fitted_fixture("servo_pendulum", ServoKind::kBench);
+  const auto f = testing::fitted_fixture("servo_pendulum", "bench");
   expect_round_trip(*f.input);
 }
 
 TEST(UrdfExport, IdealServoKeepsTheUrdfVelocityLimit) {
-  const auto f = testing::fitted_fixture("nao", ServoKind::kIdeal);
+  const auto f = testing::fitted_fixture("nao", "ideal");
   expect_round_trip(*f.input);
   const auto source = urdf::parseURDFFile(f.model->urdf_path);
   const auto exported = urdf::parseURDF(export_urdf(*f.input));
@@ -113,7 +113,7 @@ TEST(UrdfExport, UrdfdomErrorsAreReported) {
 // MuJoCo 2.2.2 reads URDF too (damping → damping, friction → frictionloss) and skips the
 // transmissions and the extension.
 TEST(UrdfExport, MujocosUrdfReaderAcceptsTheExport) {
-  const auto f = testing::fitted_fixture("servo_pendulum", ServoKind::kBench);
+  const auto f = testing::fitted_fixture("servo_pendulum", "bench");
   EXPECT_EQ(mujoco_errors(export_urdf(*f.input)), "");
 }
 

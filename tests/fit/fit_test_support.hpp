@@ -13,8 +13,8 @@
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/fit_runner.hpp"
 #include "motoflex/io/joint_log.hpp"
-#include "motoflex/sim/rollout_log.hpp"
 #include "motoflex/scenario/scenario.hpp"
+#include "motoflex/sim/rollout_log.hpp"
 
 namespace motoflex::testing {
 

@@ -123,7 +123,7 @@ TEST(RobotModelTest, NaoActuatorsAreTheTenLegJointsInLogOrder) {
       "LHipRoll", "LHipPitch", "LKneePitch", "LAnklePitch", "LAnkleRoll",
       "RHipRoll", "RHipPitch", "RKneePitch", "RAnklePitch", "RAnkleRoll"};
   EXPECT_EQ(nao.actuator_names(), expected);
-  EXPECT_EQ(nao.default_servo, ServoKind::kMotoflex);
+  EXPECT_EQ(nao.default_servo, "motoflex");
   EXPECT_FALSE(nao.fixed_base);
   // Stand pose of robot.yaml in actuator order.
   const std::vector<double> stand = {0.0, -0.3, 0.6, -0.3, 0.0, 0.0, -0.3, 0.6, -0.3, 0.0};

@@ -33,7 +33,7 @@ TEST(NaoKick, RigidNaoKicksWithEitherLegAndStaysUp) {
   const RobotModel& model = rigid_nao();
   const ParameterSet parameters(model.parameters);
   RolloutOptions options;
-  options.servo = ServoKind::kIdeal;
+  options.servo = "ideal";
   options.settle_s = 0.5;
   for (const bool left : {false, true}) {
     NaoKickParams p;

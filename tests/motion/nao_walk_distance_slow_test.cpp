@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "motoflex/core/random_stream.hpp"
-#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/io/yaml_reader.hpp"
+#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/sim/rollout.hpp"
 
 namespace motoflex {
@@ -58,7 +58,7 @@ TEST(NaoWalkDistance, ReferenceWalksOnIdealServosAndOnTheTruthModel) {
   const YamlValue truth = YamlValue::load_file(truth_file);
   // The recording set-up of `motoflex record` (src/cli/cmd_record.cpp).
   ScenarioOverrides recorded;
-  recorded.servo = parse_servo_kind(truth.at("servo").as_string());
+  recorded.servo = truth.at("servo").as_string();
   const YamlValue physics = truth.at("physics");
   recorded.flex_sub_bodies = physics.at("flex_sub_bodies").as_int();
   recorded.gear_substeps = physics.at("gear_substeps").as_int();

@@ -416,7 +416,7 @@ TEST(NaoWalk, RigidNaoWalksAtTheCommandedSpeed) {
   const RobotModel& model = rigid_nao();
   const ParameterSet parameters(model.parameters);
   RolloutOptions options;
-  options.servo = ServoKind::kIdeal;
+  options.servo = "ideal";
   options.settle_s = 0.5;
   for (const Combination& c : kWalks) {
     const NaoWalkPlan plan = plan_nao_walk(model, params(c));

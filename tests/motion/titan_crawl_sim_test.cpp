@@ -65,7 +65,7 @@ CrawlRun simulate_crawl(TitanPosture posture, int periods, bool servo_lead) {
   const CommandTrajectory commands = titan_command_trajectory(kinematics, gait, command_options);
 
   RolloutOptions options;
-  options.servo = ServoKind::kVelocity;
+  options.servo = "velocity";
   options.solver = StepSolver::kStep;
   const std::size_t n = model.actuators.size();
   std::vector<double> now(n), next(n);

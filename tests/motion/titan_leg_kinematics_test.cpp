@@ -205,7 +205,7 @@ TEST(TitanLegKinematics, ForwardKinematicsMatchesTheOdeBodies) {
   const TitanKinematics kinematics(model);
   const ParameterSet parameters(model.parameters);
   RolloutOptions options;
-  options.servo = ServoKind::kVelocity;
+  options.servo = "velocity";
   // An asymmetric pose: every leg at a different point of a posture-B-like stroke, FL lifted.
   const std::array<Eigen::Vector3d, 4> soles = {
       Eigen::Vector3d(0.21, 0.35, -0.20), Eigen::Vector3d(0.30, -0.33, -0.243),

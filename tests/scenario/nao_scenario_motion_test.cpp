@@ -8,9 +8,9 @@
 #include <string>
 
 #include "motoflex/core/error.hpp"
-#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/motion/nao_kick.hpp"
 #include "motoflex/motion/nao_walk.hpp"
+#include "motoflex/scenario/scenario.hpp"
 
 namespace motoflex {
 namespace {
@@ -46,7 +46,7 @@ TEST_F(NaoScenarioTest, BundledWalksLoadAsPlanned) {
     const std::string name = "nao_walk_" + std::to_string(speed) + "_" + std::to_string(duration);
     const Scenario scenario = load_scenario(kWalks + name + ".yaml");
     EXPECT_EQ(scenario.name, name);
-    EXPECT_EQ(scenario.rollout.servo, ServoKind::kIdeal);
+    EXPECT_EQ(scenario.rollout.servo, "ideal");
     EXPECT_EQ(scenario.model->structure.flex_sub_bodies, 1);
     EXPECT_DOUBLE_EQ(scenario.rollout.settle_s, 0.5);
     EXPECT_NEAR(scenario.log_rate_hz, 100.0, 1e-9);

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "motoflex/core/error.hpp"
-#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/motion/titan_gait.hpp"
+#include "motoflex/scenario/scenario.hpp"
 
 namespace motoflex {
 namespace {
@@ -43,7 +43,7 @@ TEST_F(TitanScenarioTest, BundledCrawlsLoadThePlannedGait) {
   for (const char* posture : {"A", "B", "C", "D"}) {
     const Scenario scenario = load_scenario(kScenarios + "crawl_" + posture + ".yaml");
     EXPECT_EQ(scenario.model->name, "titan8");
-    EXPECT_EQ(scenario.rollout.servo, ServoKind::kVelocity);
+    EXPECT_EQ(scenario.rollout.servo, "velocity");
     EXPECT_EQ(scenario.commands.frames(), 3u * 480u + 1u) << posture;
     EXPECT_EQ(scenario.commands.joints(), 16u);
     EXPECT_DOUBLE_EQ(scenario.log_rate_hz, 100.0);

@@ -43,7 +43,7 @@ void expect_bit_identical(const RolloutResult& a, const RolloutResult& b, const 
 
 TEST(DeterminismTest, SameRolloutTwiceIsBitIdentical) {
   const Scenario s = nao_scenario();
-  ASSERT_EQ(s.rollout.servo, ServoKind::kMotoflex);
+  ASSERT_EQ(s.rollout.servo, "motoflex");
   ASSERT_EQ(s.model->structure.flex_sub_bodies, 2);
   ASSERT_EQ(s.rollout.gear_substeps, 100);
   ASSERT_EQ(s.rollout.solver, StepSolver::kStep);

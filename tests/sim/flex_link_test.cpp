@@ -141,7 +141,7 @@ TEST_F(FlexLinkTest, StaticDeflectionIsLoadTorqueOverSpring) {
   params.set("flex.spring_nm_per_rad", kSpring_nm_per_rad);
   params.set("flex.damping_nm_s_per_rad", 5.0);  // about critical: settles within 0.2 s
   RolloutOptions options;
-  options.servo = ServoKind::kIdeal;
+  options.servo = "ideal";
   Rollout rollout(*model_, params, options, {0.0});
   const double hold = 0.0;
   for (int k = 0; k < 1000; ++k) ASSERT_TRUE(rollout.step(&hold, &hold));
@@ -162,7 +162,7 @@ TEST_F(FlexLinkTest, LightlyDampedBeamSwingsAtItsNaturalFrequency) {
   params.set("flex.spring_nm_per_rad", kSpring_nm_per_rad);
   params.set("flex.damping_nm_s_per_rad", 1e-4);
   RolloutOptions options;
-  options.servo = ServoKind::kIdeal;
+  options.servo = "ideal";
   Rollout rollout(*model_, params, options, {0.0});
   // Moment of inertia of the outer body (half beam + tip) about the flex axis.
   const BodySpec& outer = model_->bodies[body_named("beam#1")];

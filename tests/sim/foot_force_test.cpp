@@ -22,8 +22,7 @@ TEST(FootForce, StandingRobotsCarryTheirWeightOnTheirFeet) {
         load_robot_model(std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/robots/" + robot, {});
     const ParameterSet parameters(model.parameters);
     RolloutOptions options;
-    options.servo =
-        model.default_servo == ServoKind::kMotoflex ? ServoKind::kIdeal : model.default_servo;
+    options.servo = model.default_servo == "motoflex" ? "ideal" : model.default_servo;
     const std::vector<double> pose = model.stand_pose_vector();
     const CommandTrajectory commands = keyframe_trajectory({{0.0, pose}, {3.0, pose}}, 100.0);
     const RolloutResult result = run_rollout(model, parameters, commands, options);

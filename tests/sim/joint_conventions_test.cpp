@@ -127,7 +127,7 @@ void lift_and_float(const RobotModel& model, Rollout& rollout) {
 
 // From rest, without gravity and contacts, a command above the current angle must make that joint
 // turn positively (and one below, negatively) for every servo law and joint kind.
-void expect_positive_response(const Case& c, ServoKind servo, double step_rad, int steps) {
+void expect_positive_response(const Case& c, const std::string& servo, double step_rad, int steps) {
   const RobotModel model = load_robot_model(robot_dir(c.robot), c.structure);
   const ParameterSet params(model.parameters);
   RolloutOptions options;
@@ -141,11 +141,11 @@ void expect_positive_response(const Case& c, ServoKind servo, double step_rad, i
       std::vector<double> command = start;
       command[i] += sign * step_rad;
       for (int k = 0; k < steps; ++k) rollout.step(command.data(), command.data());
-      const std::string where = c.label() + " " + to_string(servo) + " " + model.actuators[i].name +
-                                (sign > 0 ? " +" : " -");
+      const std::string where =
+          c.label() + " " + servo + " " + model.actuators[i].name + (sign > 0 ? " +" : " -");
       EXPECT_GT(sign * rollout.joint_rate_rad_s(i), 0.0) << where;
       EXPECT_GT(sign * (rollout.joint_angle_rad(i) - start[i]), 0.0) << where;
-      if (servo == ServoKind::kMotoflex || servo == ServoKind::kBench) {
+      if (servo == "motoflex" || servo == "bench") {
         EXPECT_GT(sign * rollout.actuator_torque_nm(i), 0.0) << where;
       }
     }
@@ -161,9 +161,9 @@ TEST(JointConventionsTest, JointStopsSitAtTheUrdfLimits) {
     const RobotModel model = load_robot_model(robot_dir(c.robot), c.structure);
     ParameterSet params(model.parameters);
     RolloutOptions options;
-    options.servo = c.robot == "titan8" ? ServoKind::kVelocity : ServoKind::kIdeal;
+    options.servo = c.robot == "titan8" ? "velocity" : "ideal";
     options.stop_on_fall = false;
-    if (options.servo == ServoKind::kVelocity) {
+    if (options.servo == "velocity") {
       for (const ActuatorSpec& a : model.actuators) {
         params.set("joint." + a.name + ".gain_per_s", 20.0);
       }
@@ -191,18 +191,18 @@ TEST(JointConventionsTest, PositiveTorqueTurnsTheJointPositively) {
   // The motoflex pipeline applies its torque with dJointAdd*Torque(s): the sign mapping of
   // hinge and universal axes is exercised directly.
   for (const Case& c : {kCases[0], kCases[1], kCases[2]}) {
-    expect_positive_response(c, ServoKind::kMotoflex, 0.2, 10);
+    expect_positive_response(c, "motoflex", 0.2, 10);
   }
-  expect_positive_response(kCases[5], ServoKind::kBench, 0.5, 10);
+  expect_positive_response(kCases[5], "bench", 0.5, 10);
 }
 
 TEST(JointConventionsTest, PositiveVelocityCommandTurnsTheJointPositively) {
   // Ideal and velocity servos drive ODE's joint motor rows (dParamVel) instead. The ideal servo
   // asks for the rate that reaches the target in one step (torque-limited) and then for rest, so
   // look right after that step.
-  expect_positive_response(kCases[0], ServoKind::kIdeal, 0.05, 1);
-  expect_positive_response(kCases[1], ServoKind::kIdeal, 0.05, 1);
-  expect_positive_response(kCases[4], ServoKind::kVelocity, 0.2, 10);
+  expect_positive_response(kCases[0], "ideal", 0.05, 1);
+  expect_positive_response(kCases[1], "ideal", 0.05, 1);
+  expect_positive_response(kCases[4], "velocity", 0.2, 10);
 }
 
 }  // namespace

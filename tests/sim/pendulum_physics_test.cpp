@@ -51,7 +51,7 @@ RolloutOptions bench_options() {
   RolloutOptions options;
   options.dt_s = kDt_s;
   options.solver = StepSolver::kStep;
-  options.servo = ServoKind::kBench;
+  options.servo = "bench";
   return options;
 }
 

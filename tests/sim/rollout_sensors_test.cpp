@@ -26,7 +26,7 @@ TEST(RolloutSensorsTest, DelayedLogIsTheUndelayedLogShifted) {
   const CommandTrajectory commands =
       keyframe_trajectory({{0.0, {0.0}}, {0.5, {0.8}}, {1.2, {-0.6}}, {2.0, {0.2}}}, 100.0);
   RolloutOptions options;
-  options.servo = ServoKind::kBench;
+  options.servo = "bench";
   options.record_torques = true;
 
   ParameterSet exact(bench.parameters);
@@ -64,7 +64,7 @@ TEST(RolloutSensorsTest, ImuReportsTorsoRollAndPitch) {
       load_robot_model(std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/robots/nao", {});
   const ParameterSet params(nao.parameters);
   RolloutOptions options;
-  options.servo = ServoKind::kIdeal;
+  options.servo = "ideal";
   Rollout rollout(nao, params, options, nao.stand_pose_vector());
   const dBodyID torso = RolloutOdeAccess::body(rollout, nao.torso_body);
   for (const auto& [yaw, pitch, roll] :

@@ -71,7 +71,7 @@ void expect_completed(const RolloutResult& r, const std::string& label) {
 TEST(StandingTest, NaoStandsOnIdealServos) {
   const RobotModel nao = load_robot_model(robot_dir("nao"), {1, true});
   RolloutOptions options;
-  options.servo = ServoKind::kIdeal;
+  options.servo = "ideal";
   const Stand s = stand(nao, options);
   expect_completed(s.result, "nao ideal");
   const double dz = max_height_change_m(s.result);
@@ -86,7 +86,7 @@ TEST(StandingTest, NaoStandsOnIdealServos) {
 TEST(StandingTest, NaoStandsWithTheFullMotoflexPipeline) {
   const RobotModel nao = load_robot_model(robot_dir("nao"), {2, true});
   RolloutOptions options;
-  options.servo = ServoKind::kMotoflex;
+  options.servo = "motoflex";
   options.gear_substeps = 100;
   const Stand s = stand(nao, options);
   expect_completed(s.result, "nao motoflex flex 2");
@@ -102,7 +102,7 @@ TEST(StandingTest, NaoStandsWithTheFullMotoflexPipeline) {
 TEST(StandingTest, Titan8StandsOnItsVelocityServos) {
   const RobotModel titan = load_robot_model(robot_dir("titan8"), {});
   RolloutOptions options;
-  options.servo = ServoKind::kVelocity;
+  options.servo = "velocity";
   const Stand s = stand(titan, options);
   const RolloutResult& r = s.result;
   expect_completed(r, "titan8 velocity");

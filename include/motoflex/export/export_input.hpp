@@ -29,7 +29,7 @@ struct FitProvenance {
 struct ExportInput {
   const RobotModel& model;
   ParameterSet parameters;
-  ServoKind servo = ServoKind::kMotoflex;
+  std::string servo = "motoflex";  // the servo law the values belong to
   FitProvenance provenance;
   double dt_s = 0.001;  // physics step the parameters were fitted at (MJCF/SDF time step)
 };

@@ -2,7 +2,7 @@
 
 // The library of physical effects a model may lack. Each effect is one unit: the model
 // parameters that switch it on (names, search bounds, scale), the structure it needs (e.g.
-// flexible sub-bodies), which servos and robots it applies to, and the probe that produces its
+// flexible sub-bodies), which robots it applies to (feet), and the probe that produces its
 // residual signature: a small step of its parameters from the current fit, whose effect on the
 // simulated encoders is the shape the effect leaves in the residual (see effect_signature.hpp).
 // Every hook is already in the simulator with a neutral default, so adding an effect to a fit
@@ -33,9 +33,8 @@ struct Effect {
   std::string description;  // one line for reports
   std::string signature;    // what its residual looks like, for reports
   std::vector<EffectParameter> parameters;
-  std::vector<ServoKind> servos;  // where the hook exists; empty = every servo
-  bool needs_feet = false;        // ground effects: only robots with foot boxes
-  int flex_sub_bodies = 0;        // >= 2: the effect needs links split into sub-bodies
+  bool needs_feet = false;  // ground effects: only robots with foot boxes
+  int flex_sub_bodies = 0;  // >= 2: the effect needs links split into sub-bodies
 };
 
 // Every effect motoflex knows, in a fixed order.
@@ -43,8 +42,5 @@ const std::vector<Effect>& effect_library();
 // Throws InputError(source, line, field) naming the known effects when `name` is not one.
 const Effect& find_effect(const std::string& name, const std::string& source = "", int line = 0,
                           const std::string& field = "effects");
-// Whether the robot/servo of a model supports the effect's hook (the structure is checked by
-// the caller that builds the variant model).
-bool effect_applies(const Effect& effect, const RobotModel& model, ServoKind servo);
 
 }  // namespace motoflex

@@ -22,6 +22,10 @@ struct ParameterSpec {
 // name has no unit suffix.
 std::string unit_from_parameter_name(const std::string& name);
 
+// Whether a parameter name matches a pattern: '*' matches any run of characters other than '.'
+// ("joint.*.friction_nm"), "**" any run at all; everything else literally.
+bool parameter_pattern_matches(const std::string& pattern, const std::string& name);
+
 // The set of parameters a robot model has. Immutable once the model is loaded.
 class ParameterRegistry {
  public:

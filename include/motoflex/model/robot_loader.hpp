@@ -10,10 +10,8 @@ namespace motoflex {
 // Loads `<robot_dir>/robot.yaml` and the URDF it names into an immutable RobotModel: links
 // welded by fixed or held joints become one body, declared hinge pairs become universal joints
 // (if enabled), flexible links are split into sub-bodies. Throws InputError naming file, line
-// and field for any problem with either file.
+// and field for any problem with either file. The parameter names are checked against the servo
+// laws one layer up (load_robot in motoflex/sim/robot_parameter_check.hpp); call that one.
 RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions& structure);
-
-// Names of the parameters a servo kind reads for this model, in a stable order.
-std::vector<std::string> required_parameters(const RobotModel& model, ServoKind servo);
 
 }  // namespace motoflex

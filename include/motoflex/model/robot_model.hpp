@@ -12,16 +12,6 @@
 
 namespace motoflex {
 
-// Which servo law drives the actuated joints (robot.yaml `servo`, overridable per scenario).
-enum class ServoKind {
-  kMotoflex,  // seed 001: PID → DC motor → gear train → joint torque, dry friction in ODE
-  kVelocity,  // seed 000: θ̇_d = −k_d(θ − θ_d) on an ODE joint motor limited to τ_max
-  kIdeal,     // reaches the next commanded angle in one step, torque-limited
-  kBench,     // the pendulum bench's voltage P servo (BAM)
-};
-std::optional<ServoKind> parse_servo_kind(const std::string& text);
-const char* to_string(ServoKind kind);
-
 // Structural choices made when a robot is loaded (they change bodies and joints, not values).
 struct StructureOptions {
   int flex_sub_bodies = 1;       // sub-bodies per flexible link (1 = rigid)
@@ -85,7 +75,8 @@ struct RobotModel {
   std::string name;
   std::string directory;  // folder of robot.yaml
   std::string urdf_path;
-  ServoKind default_servo = ServoKind::kIdeal;
+  // The servo law of robot.yaml's `servo:` (a name of the sim layer's registry, checked there).
+  std::string default_servo = "ideal";
   StructureOptions structure;
 
   std::vector<BodySpec> bodies;
@@ -102,6 +93,14 @@ struct RobotModel {
   std::map<std::string, double> stand_pose_rad;  // actuated joint → angle (missing: 0)
 
   ParameterRegistry parameters;
+  // Where robot.yaml declared what, so checks made after loading (the servo law's parameters,
+  // in the sim layer) can still name the file and line.
+  struct Source {
+    std::string yaml_path;
+    int servo_line = 0;
+    int parameters_line = 0;
+    std::map<std::string, int> parameter_lines;  // declared parameters only
+  } source;
 
   std::optional<std::size_t> actuator_index(const std::string& joint_name) const;
   std::vector<std::string> actuator_names() const;

@@ -51,7 +51,7 @@ struct ScenarioOverrides {
   std::optional<std::string> motion_log;       // --motion LOG.csv
   std::optional<std::string> parameters_json;  // --params P.json
   std::optional<StepSolver> solver;            // --solver step|quick
-  std::optional<ServoKind> servo;              // --servo
+  std::optional<std::string> servo;            // --servo (a servo law's name)
   std::optional<int> flex_sub_bodies;
   std::optional<int> gear_substeps;
   std::optional<bool> universal_joints;

@@ -6,10 +6,10 @@
 #include <utility>
 
 #include "motoflex/core/error.hpp"
-#include "motoflex/scenario/scenario.hpp"
 #include "motoflex/io/yaml_reader.hpp"
-#include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/titan_leg_kinematics.hpp"
+#include "motoflex/scenario/scenario.hpp"
+#include "motoflex/sim/robot_parameter_check.hpp"
 
 namespace motoflex {
 namespace {
@@ -52,7 +52,7 @@ std::shared_ptr<const RobotModel> read_robot(const YamlValue& root, double& clea
   if (!std::filesystem::exists(std::filesystem::path(robot_dir) / "robot.yaml")) {
     robot_field.fail("no robot.yaml in '" + robot_dir + "'");
   }
-  auto model = std::make_shared<RobotModel>(load_robot_model(robot_dir, StructureOptions{}));
+  auto model = std::make_shared<RobotModel>(load_robot(robot_dir, StructureOptions{}));
   if (clearance_given) model->initial_clearance_m = clearance_m;
   try {
     const TitanKinematics kinematics(*model);
@@ -163,26 +163,22 @@ TitanStudyConfig load_titan_study_config(const std::string& path) {
   root.require_keys_within({"name", "robot", "servo", "physics", "contact", "parameters",
                             "commands", "static", "updown", "crawl", "timing"});
   RolloutOptions rollout;
-  rollout.servo = ServoKind::kVelocity;
+  rollout.servo = "velocity";
   double clearance_m = 0.0;
   bool clearance_given = false;
   read_physics(root, rollout, clearance_m, clearance_given);
   std::shared_ptr<const RobotModel> model = read_robot(root, clearance_m, clearance_given);
   if (const auto servo = root.find("servo")) {
-    const auto parsed = parse_servo_kind(servo->as_string());
-    if (!parsed || (*parsed != ServoKind::kVelocity && *parsed != ServoKind::kIdeal)) {
+    const std::string name = servo->as_string();
+    if (name != "velocity" && name != "ideal") {
       servo->fail(
           "expected velocity (eq. 3, the paper's) or ideal: joint feedback sees only servos "
           "that act through ODE joint motors");
     }
-    rollout.servo = *parsed;
+    rollout.servo = name;
   }
-  for (const auto& name : required_parameters(*model, rollout.servo)) {
-    if (!model->parameters.contains(name)) {
-      root.at("robot").fail("robot does not declare '" + name + "', needed by servo '" +
-                            to_string(rollout.servo) + "'");
-    }
-  }
+  const YamlValue servo_field = root.find("servo") ? root.at("servo") : root.at("robot");
+  check_servo_parameters(*model, rollout.servo, path, servo_field.line(), servo_field.field());
 
   TitanStudySetup setup(model);
   setup.rollout = rollout;
@@ -190,12 +186,12 @@ TitanStudyConfig load_titan_study_config(const std::string& path) {
                           TitanPaperStudyPlan(std::move(setup))};
   TitanPaperStudyPlan& plan = config.plan;
   read_contact_and_parameters(root, plan.setup.parameters);
-  plan.setup.servo_lead = rollout.servo == ServoKind::kVelocity;
+  plan.setup.servo_lead = rollout.servo == "velocity";
   if (const auto commands = root.find("commands")) {
     commands->require_keys_within({"rate_hz", "servo_lead"});
     plan.setup.command_rate_hz = positive(*commands, "rate_hz", plan.setup.command_rate_hz);
     plan.setup.servo_lead = commands->get_bool("servo_lead", plan.setup.servo_lead);
-    if (plan.setup.servo_lead && rollout.servo != ServoKind::kVelocity) {
+    if (plan.setup.servo_lead && rollout.servo != "velocity") {
       commands->at("servo_lead").fail("needs the velocity servo");
     }
   }

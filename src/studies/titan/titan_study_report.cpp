@@ -142,7 +142,7 @@ void write_titan_study_report(const TitanStudyConfig& config, const TitanPaperSt
      << "Endo, Arikawa, Hirose, ICRA 2011, reproduced with `motoflex titan " << config.path
      << "`: ODE "
      << "0.16 dWorldStep, " << fmt(1000 * config.plan.setup.rollout.dt_s, 1) << " ms steps, servo `"
-     << to_string(config.plan.setup.rollout.servo) << "` (eq. 3, Table I), contacts mu "
+     << config.plan.setup.rollout.servo << "` (eq. 3, Table I), contacts mu "
      << config.plan.setup.parameters.get("contact.mu") << " with the friction pyramid, slip "
      << config.plan.setup.parameters.get("contact.slip") << ", soft ERP "
      << config.plan.setup.parameters.get("contact.soft_erp") << ", soft CFM "

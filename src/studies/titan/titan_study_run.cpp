@@ -20,14 +20,14 @@ double thread_cpu_s() {
 
 void check_titan_study_setup(const TitanStudySetup& setup) {
   if (!setup.model) throw std::invalid_argument("TITAN study: no robot model");
-  const ServoKind servo = setup.rollout.servo;
-  if (servo != ServoKind::kVelocity && servo != ServoKind::kIdeal) {
+  const std::string& servo = setup.rollout.servo;
+  if (servo != "velocity" && servo != "ideal") {
     throw std::invalid_argument(
-        std::string("TITAN study: servo '") + to_string(servo) +
+        "TITAN study: servo '" + servo +
         "' adds torques outside ODE's constraints, which joint feedback (eq. 4-5) cannot see; "
         "use velocity (the paper's) or ideal");
   }
-  if (setup.servo_lead && servo != ServoKind::kVelocity) {
+  if (setup.servo_lead && servo != "velocity") {
     throw std::invalid_argument("TITAN study: servo_lead needs the velocity servo");
   }
   if (!(setup.command_rate_hz > 0.0)) {

@@ -7,9 +7,9 @@
 
 #include <cmath>
 
+#include "motoflex/sim/ode_runtime.hpp"
 #include "motoflex/studies/titan/joint_wrench.hpp"
 #include "motoflex/studies/titan/leg_jacobian_torque.hpp"
-#include "motoflex/sim/ode_runtime.hpp"
 
 namespace motoflex {
 namespace {

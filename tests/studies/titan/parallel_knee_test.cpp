@@ -6,10 +6,10 @@
 #include <cmath>
 #include <string>
 
-#include "motoflex/studies/titan/leg_jacobian_torque.hpp"
-#include "motoflex/studies/titan/parallel_knee.hpp"
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/titan_leg_kinematics.hpp"
+#include "motoflex/studies/titan/leg_jacobian_torque.hpp"
+#include "motoflex/studies/titan/parallel_knee.hpp"
 
 namespace motoflex {
 namespace {

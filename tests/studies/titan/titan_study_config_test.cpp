@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 TEST(TitanStudyConfig, PaperFileHoldsThePapersSettings) {
   const TitanStudyConfig& config = testing::titan_paper_config();
   const TitanPaperStudyPlan& plan = config.plan;
-  EXPECT_EQ(plan.setup.rollout.servo, ServoKind::kVelocity);
+  EXPECT_EQ(plan.setup.rollout.servo, "velocity");
   EXPECT_EQ(plan.setup.rollout.solver, StepSolver::kStep);
   EXPECT_DOUBLE_EQ(plan.setup.rollout.dt_s, 0.001);
   EXPECT_DOUBLE_EQ(plan.setup.model->initial_clearance_m, 0.01);

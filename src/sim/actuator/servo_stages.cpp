@@ -1,8 +1,10 @@
-#include "motoflex/sim/actuator/servo_laws.hpp"
+#include "motoflex/sim/actuator/servo_stages.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "motoflex/core/error.hpp"
 
 namespace motoflex {
 
@@ -46,6 +48,29 @@ MotorCommand joint_friction(const JointFrictionParams& params, double velocity_r
   }
   budget_nm += params.load_coefficient * std::abs(load_torque_nm);
   return MotorCommand{0.0, budget_nm};
+}
+
+JointFrictionParams read_joint_friction(const ParameterReader& get, const std::string& joint) {
+  const std::string prefix = "joint." + joint + ".";
+  JointFrictionParams friction;
+  friction.coulomb_nm = get(prefix + "friction_nm");
+  friction.viscous_nm_s_per_rad = get(prefix + "viscous_nm_s_per_rad");
+  friction.stribeck_nm = get(prefix + "stribeck_nm");
+  friction.stribeck_velocity_rad_s = get(prefix + "stribeck_velocity_rad_s");
+  friction.load_coefficient = get(prefix + "load_friction");
+  if (friction.coulomb_nm < 0.0 || friction.viscous_nm_s_per_rad < 0.0 ||
+      friction.stribeck_nm < 0.0 || !(friction.stribeck_velocity_rad_s > 0.0) ||
+      friction.load_coefficient < 0.0) {
+    throw ModelError("friction parameters of " + prefix + "* must not be negative (" + prefix +
+                     "stribeck_velocity_rad_s > 0)");
+  }
+  return friction;
+}
+
+std::vector<std::string> joint_friction_parameter_names(const std::string& joint) {
+  const std::string prefix = "joint." + joint + ".";
+  return {prefix + "friction_nm", prefix + "viscous_nm_s_per_rad", prefix + "stribeck_nm",
+          prefix + "stribeck_velocity_rad_s", prefix + "load_friction"};
 }
 
 }  // namespace motoflex

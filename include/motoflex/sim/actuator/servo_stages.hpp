@@ -1,13 +1,13 @@
 #pragma once
 
-namespace motoflex {
+// The stages the servo laws are made of, as pure functions of their inputs (the laws in
+// src/sim/actuator/*_servo_law.cpp hold the state and read the parameters).
 
-// A velocity command for an ODE joint motor: the motor row drives the joint toward
-// velocity_rad_s with at most fmax_nm (solved implicitly by ODE inside the step).
-struct MotorCommand {
-  double velocity_rad_s = 0.0;
-  double fmax_nm = 0.0;
-};
+#include <string>
+
+#include "motoflex/sim/actuator/servo_law.hpp"
+
+namespace motoflex {
 
 // Seed 000 §II-C, eq. 3: θ̇_d = −k_d(θ − θ_d), torque limited to τ_max (Table I).
 struct VelocityServoParams {
@@ -58,5 +58,10 @@ struct JointFrictionParams {
 };
 MotorCommand joint_friction(const JointFrictionParams& params, double velocity_rad_s,
                             double load_torque_nm = 0.0);
+// Reads joint.<joint>.{friction_nm, viscous_nm_s_per_rad, stribeck_nm, stribeck_velocity_rad_s,
+// load_friction}. Throws ModelError for a negative value or a non-positive Stribeck velocity.
+JointFrictionParams read_joint_friction(const ParameterReader& get, const std::string& joint);
+// The names read_joint_friction reads, in its order.
+std::vector<std::string> joint_friction_parameter_names(const std::string& joint);
 
 }  // namespace motoflex

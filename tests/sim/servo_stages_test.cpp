@@ -1,4 +1,4 @@
-#include "motoflex/sim/actuator/servo_laws.hpp"
+#include "motoflex/sim/actuator/servo_stages.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 namespace motoflex {
 namespace {
 
-TEST(ServoLawsTest, VelocityServoFollowsEq3WithTorqueLimit) {
+TEST(ServoStagesTest, VelocityServoFollowsEq3WithTorqueLimit) {
   const VelocityServoParams params{.gain_per_s = 4.0, .torque_max_nm = 10.0};
   // θ̇_d = −k_d(θ − θ_d): 0.5 rad short of the target → +2 rad/s.
   MotorCommand command = velocity_servo(params, 0.5, 0.0);
@@ -21,14 +21,14 @@ TEST(ServoLawsTest, VelocityServoFollowsEq3WithTorqueLimit) {
   EXPECT_EQ(velocity_servo(params, 1.2, 1.2).velocity_rad_s, 0.0);
 }
 
-TEST(ServoLawsTest, IdealServoReachesNextTargetInOneStep) {
+TEST(ServoStagesTest, IdealServoReachesNextTargetInOneStep) {
   const MotorCommand command = ideal_servo({.torque_max_nm = 100.0}, 0.31, 0.3, 1e-3);
   EXPECT_NEAR(command.velocity_rad_s, 10.0, 1e-9);
   EXPECT_EQ(command.fmax_nm, 100.0);
   EXPECT_THROW(ideal_servo({}, 0.0, 0.0, 0.0), std::invalid_argument);
 }
 
-TEST(ServoLawsTest, BenchServoStallsAtClippedDuty) {
+TEST(ServoStagesTest, BenchServoStallsAtClippedDuty) {
   BenchServoParams params;
   params.max_duty = 0.9;
   // A large error saturates the duty (0.0028774·32·20 = 1.84 > 0.9): τ = K_t·V·max_duty/R at
@@ -39,7 +39,7 @@ TEST(ServoLawsTest, BenchServoStallsAtClippedDuty) {
   EXPECT_DOUBLE_EQ(bench_servo_torque_nm(params, -20.0, 0.0, 0.0, true), -stall_nm);
 }
 
-TEST(ServoLawsTest, BenchServoLinearRegionAndBackEmf) {
+TEST(ServoStagesTest, BenchServoLinearRegionAndBackEmf) {
   BenchServoParams params;
   params.torque_constant_nm_per_a = 0.8;
   const double error_rad = 0.1;  // duty = 0.0028774·32·0.1 = 0.0092, unclipped
@@ -56,12 +56,12 @@ TEST(ServoLawsTest, BenchServoLinearRegionAndBackEmf) {
               kt * params.supply_v * duty / r - kt * kt * 2.0 / r, 1e-15);
 }
 
-TEST(ServoLawsTest, BenchServoWithTorqueDisabledIsFree) {
+TEST(ServoStagesTest, BenchServoWithTorqueDisabledIsFree) {
   const BenchServoParams params;
   EXPECT_EQ(bench_servo_torque_nm(params, 3.0, 0.0, 5.0, false), 0.0);
 }
 
-TEST(ServoLawsTest, JointFrictionBudgetIsCoulombPlusViscous) {
+TEST(ServoStagesTest, JointFrictionBudgetIsCoulombPlusViscous) {
   const JointFrictionParams params{.coulomb_nm = 0.05, .viscous_nm_s_per_rad = 0.2};
   MotorCommand command = joint_friction(params, 0.0);
   EXPECT_EQ(command.velocity_rad_s, 0.0);
@@ -72,7 +72,7 @@ TEST(ServoLawsTest, JointFrictionBudgetIsCoulombPlusViscous) {
   EXPECT_DOUBLE_EQ(joint_friction(params, 1.5).fmax_nm, command.fmax_nm);
 }
 
-TEST(ServoLawsTest, StribeckAndLoadDependentFrictionBudget) {
+TEST(ServoStagesTest, StribeckAndLoadDependentFrictionBudget) {
   const JointFrictionParams params{.coulomb_nm = 0.1,
                                    .viscous_nm_s_per_rad = 0.2,
                                    .stribeck_nm = 0.3,

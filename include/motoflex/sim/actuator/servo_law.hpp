@@ -1,0 +1,109 @@
+#pragma once
+
+// The servo law of one actuated joint axis: what turns the commanded angle into a joint torque
+// and/or an ODE motor row each physics step. Every law (motoflex, velocity, ideal, bench, ...)
+// is one file in src/sim/actuator/ behind this interface, listed once in
+// servo_law_registry.cpp under the name a scenario's `servo:` key uses.
+//
+// Model vs state: a ServoLawInfo is immutable and shared; a ServoLaw instance belongs to one
+// actuator of one rollout and is touched by that rollout's thread only.
+
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "motoflex/model/parameters.hpp"
+#include "motoflex/model/robot_model.hpp"
+
+namespace motoflex {
+
+// A velocity-controlled ODE motor row on the actuated axis: ODE drives the axis rate toward
+// velocity_rad_s with a force of at most fmax_nm, solved implicitly inside the step. With
+// fmax_nm = 0 the row does nothing. (Dry friction is such a row with velocity 0.)
+struct MotorCommand {
+  double velocity_rad_s = 0.0;
+  double fmax_nm = 0.0;
+};
+
+// What a law sees of its joint at the start of a physics step (our sign convention).
+struct ServoInput {
+  double command_rad = 0.0;       // commanded angle now (what the servo regulates to)
+  double next_command_rad = 0.0;  // commanded angle at the end of the step
+  double angle_rad = 0.0;         // true joint angle
+  double rate_rad_s = 0.0;        // true joint rate
+  double elapsed_s = 0.0;         // since the rollout was created (settling included)
+  double settle_s = 0.0;          // the settling time before the motion's t = 0
+  // Σ|I| of every law of the robot after the previous step (A): a shared battery sags with it.
+  double total_current_a = 0.0;
+};
+
+// What a law applies to its joint during the step.
+struct ServoOutput {
+  // Explicit torque on the axis (N·m); NaN when the law acts only through the motor row (then
+  // the rollout reports the actuator torque as unknown).
+  double torque_nm = std::numeric_limits<double>::quiet_NaN();
+  MotorCommand row;  // the axis's motor row for this step
+};
+
+// One actuator's servo in one rollout.
+class ServoLaw {
+ public:
+  virtual ~ServoLaw() = default;
+  // Advances the law by one physics step. Throws ModelError when the state cannot go on (the
+  // rollout then ends as diverged).
+  virtual ServoOutput step(const ServoInput& input) = 0;
+  // A linear damper on the axis that the rollout integrates implicitly as its own motor row
+  // (N·m·s/rad; 0 = none). Asked once, when the rollout is built.
+  virtual double damping_row_nm_s_per_rad() const { return 0.0; }
+  // The current the law draws from the robot's supply (A), for supply effects.
+  virtual double current_a() const { return 0.0; }
+};
+
+// Reads parameter values by name for a law being set up. A name the robot does not declare is
+// a ModelError naming it and the law.
+class ParameterReader {
+ public:
+  ParameterReader(const ParameterSet& values, std::string law)
+      : values_(values), law_(std::move(law)) {}
+  double operator()(const std::string& name) const;
+
+ private:
+  const ParameterSet& values_;
+  std::string law_;
+};
+
+// Everything a law needs to build one actuator's instance.
+struct ServoLawSetup {
+  const RobotModel& model;
+  std::size_t actuator;  // index into model.actuators
+  const ParameterReader& get;
+  double dt_s = 0.001;    // physics step
+  int gear_substeps = 1;  // gear sub-steps per physics step (laws with a gear train)
+};
+
+// A servo law as the registry knows it.
+struct ServoLawInfo {
+  std::string name;     // the scenario's `servo:` value
+  std::string summary;  // one line for help texts and reports
+  // Every parameter name the law reads for one actuator (per joint, per group and robot-wide
+  // names alike), in a stable order; the robot must declare each.
+  std::vector<std::string> (*parameter_names)(const RobotModel& model, std::size_t actuator);
+  // Builds the law's state for one actuator. Throws ModelError for values it cannot simulate.
+  std::unique_ptr<ServoLaw> (*create)(const ServoLawSetup& setup);
+  // The pendulum bench: the first actuated joint's child is replaced by a point mass
+  // (bench.mass_kg at bench.length_m along the arm, inertia bench.armature_kg_m2).
+  bool point_mass_arm = false;
+};
+
+// Every law, in registration order.
+const std::vector<ServoLawInfo>& servo_laws();
+// The law registered under `name`, or nullptr.
+const ServoLawInfo* find_servo_law(const std::string& name);
+// Like find_servo_law, but throws std::invalid_argument naming the known laws.
+const ServoLawInfo& servo_law(const std::string& name);
+// "motoflex|velocity|..." for messages.
+std::string servo_law_names();
+
+}  // namespace motoflex

@@ -1,0 +1,75 @@
+// `servo: bench` — the pendulum bench's voltage-controlled P servo (Dynamixel-style firmware,
+// BAM eq. 12–13) with joint friction as a motor row, and the arm as a point mass (see
+// ServoLawInfo::point_mass_arm).
+
+#include <cmath>
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/sim/actuator/servo_stages.hpp"
+
+namespace motoflex {
+namespace {
+
+class BenchServoLaw final : public ServoLaw {
+ public:
+  BenchServoLaw(BenchServoParams params, JointFrictionParams friction, double drift_per_s)
+      : params_(params), friction_(friction), resistance_drift_per_s_(drift_per_s) {}
+
+  ServoOutput step(const ServoInput& in) override {
+    BenchServoParams bench = params_;
+    bench.resistance_ohm *= 1.0 + resistance_drift_per_s_ * in.elapsed_s;
+    // A released H-bridge (BAM lift_and_drop): no drive and no back-EMF braking.
+    const bool enabled = in.elapsed_s - in.settle_s < bench.torque_off_s;
+    ServoOutput out;
+    out.torque_nm =
+        bench_servo_torque_nm(bench, in.command_rad, in.angle_rad, in.rate_rad_s, enabled);
+    out.row = joint_friction(friction_, in.rate_rad_s, out.torque_nm);
+    return out;
+  }
+
+ private:
+  BenchServoParams params_;
+  JointFrictionParams friction_;
+  double resistance_drift_per_s_;
+};
+
+const char* const kBenchNames[] = {
+    "bench.kp",          "bench.error_gain",  "bench.max_duty",       "bench.supply_v",
+    "bench.Kt_nm_per_a", "bench.R_ohm",       "bench.armature_kg_m2", "bench.mass_kg",
+    "bench.length_m",    "bench.torque_off_s"};
+
+std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
+  std::vector<std::string> out(std::begin(kBenchNames), std::end(kBenchNames));
+  for (auto& name : joint_friction_parameter_names(model.actuators[actuator].name)) {
+    out.push_back(std::move(name));
+  }
+  out.emplace_back("motor.R_drift_per_s");
+  return out;
+}
+
+std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
+  const ParameterReader& get = setup.get;
+  BenchServoParams bench;
+  bench.kp = get("bench.kp");
+  bench.error_gain = get("bench.error_gain");
+  bench.max_duty = get("bench.max_duty");
+  bench.supply_v = get("bench.supply_v");
+  bench.torque_constant_nm_per_a = get("bench.Kt_nm_per_a");
+  bench.resistance_ohm = get("bench.R_ohm");
+  bench.torque_off_s = get("bench.torque_off_s");
+  if (!(bench.resistance_ohm > 0.0)) throw ModelError("bench.R_ohm must be positive");
+  if (bench.max_duty < 0.0) throw ModelError("bench.max_duty must not be negative");
+  const JointFrictionParams friction =
+      read_joint_friction(get, setup.model.actuators[setup.actuator].name);
+  return std::make_unique<BenchServoLaw>(bench, friction, get("motor.R_drift_per_s"));
+}
+
+}  // namespace
+
+ServoLawInfo bench_servo_law_info() {
+  ServoLawInfo info{"bench", "the pendulum bench's voltage P servo (BAM eq. 12-13)", names, create};
+  info.point_mass_arm = true;
+  return info;
+}
+
+}  // namespace motoflex

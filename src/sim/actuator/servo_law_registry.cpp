@@ -1,0 +1,51 @@
+#include <stdexcept>
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/sim/actuator/servo_law.hpp"
+
+namespace motoflex {
+
+// Each law's file defines its entry; adding a law is its file plus one line in each list below.
+ServoLawInfo motoflex_servo_law_info();
+ServoLawInfo velocity_servo_law_info();
+ServoLawInfo ideal_servo_law_info();
+ServoLawInfo bench_servo_law_info();
+
+const std::vector<ServoLawInfo>& servo_laws() {
+  static const std::vector<ServoLawInfo> laws = {
+      motoflex_servo_law_info(),
+      velocity_servo_law_info(),
+      ideal_servo_law_info(),
+      bench_servo_law_info(),
+  };
+  return laws;
+}
+
+const ServoLawInfo* find_servo_law(const std::string& name) {
+  for (const ServoLawInfo& law : servo_laws()) {
+    if (law.name == name) return &law;
+  }
+  return nullptr;
+}
+
+std::string servo_law_names() {
+  std::string names;
+  for (const ServoLawInfo& law : servo_laws()) names += (names.empty() ? "" : "|") + law.name;
+  return names;
+}
+
+const ServoLawInfo& servo_law(const std::string& name) {
+  if (const ServoLawInfo* law = find_servo_law(name)) return *law;
+  throw std::invalid_argument("unknown servo '" + name + "' (" + servo_law_names() + ")");
+}
+
+double ParameterReader::operator()(const std::string& name) const {
+  const auto index = values_.registry().find(name);
+  if (!index) {
+    throw ModelError("parameter '" + name + "' is needed by servo '" + law_ +
+                     "' but the robot does not declare it");
+  }
+  return values_.get(*index);
+}
+
+}  // namespace motoflex

@@ -1,0 +1,110 @@
+#include "motoflex/sim/robot_parameter_check.hpp"
+
+#include "motoflex/core/error_collector.hpp"
+#include "motoflex/io/yaml_reader.hpp"
+#include "motoflex/model/robot_loader.hpp"
+#include "motoflex/sim/actuator/servo_law.hpp"
+#include "resolved_parameters.hpp"
+
+namespace motoflex {
+namespace {
+
+std::string closest_known(const std::set<std::string>& known, const std::string& name) {
+  std::string hint;
+  int best = 4;
+  for (const auto& candidate : known) {
+    const int d = edit_distance(name, candidate);
+    if (d < best) {
+      best = d;
+      hint = candidate;
+    }
+  }
+  return hint;
+}
+
+void collect_missing(const RobotModel& model, const ServoLawInfo& law, ErrorCollector& errors,
+                     const std::string& source, int line, const std::string& field,
+                     const std::string& advice) {
+  for (const auto& name : rollout_parameter_names(model, law.name)) {
+    if (!model.parameters.contains(name)) {
+      errors.add(source, line, field,
+                 "missing '" + name + "', required by servo '" + law.name + "'" + advice);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> rollout_parameter_names(const RobotModel& model,
+                                                 const std::string& servo) {
+  const ServoLawInfo& law = servo_law(servo);
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  for (std::size_t a = 0; a < model.actuators.size(); ++a) {
+    for (auto& name : law.parameter_names(model, a)) {
+      if (seen.insert(name).second) names.push_back(std::move(name));
+    }
+  }
+  for (auto& name : detail::rollout_wide_parameter_names(model, law)) {
+    if (seen.insert(name).second) names.push_back(std::move(name));
+  }
+  return names;
+}
+
+std::set<std::string> known_parameter_names(const RobotModel& model) {
+  std::set<std::string> known;
+  for (const ServoLawInfo& law : servo_laws()) {
+    for (auto& name : rollout_parameter_names(model, law.name)) known.insert(std::move(name));
+  }
+  // Flexible links are split only on request (physics.flex_sub_bodies), so their names are
+  // known whether or not this model has flex joints.
+  for (const char* name :
+       {"flex.spring_nm_per_rad", "flex.damping_nm_s_per_rad", "flex.friction_nm"}) {
+    known.insert(name);
+  }
+  // The effect parameters every robot has (neutral unless declared).
+  for (const auto& spec : model.parameters.specs()) {
+    if (!model.source.parameter_lines.count(spec.name)) known.insert(spec.name);
+  }
+  return known;
+}
+
+void check_robot_parameters(const RobotModel& model) {
+  const std::string& file = model.source.yaml_path;
+  ErrorCollector errors;
+  const std::set<std::string> known = known_parameter_names(model);
+  for (const auto& [name, line] : model.source.parameter_lines) {
+    if (known.count(name)) continue;
+    const std::string hint = closest_known(known, name);
+    errors.add(file, line, "parameters." + name,
+               "unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+  }
+  if (const ServoLawInfo* law = find_servo_law(model.default_servo)) {
+    collect_missing(model, *law, errors, file, model.source.parameters_line, "parameters", "");
+  } else {
+    errors.add(file, model.source.servo_line, "servo",
+               "unknown servo '" + model.default_servo + "' (" + servo_law_names() + ")");
+  }
+  errors.throw_if_any();
+}
+
+void check_servo_parameters(const RobotModel& model, const std::string& servo,
+                            const std::string& source, int line, const std::string& field) {
+  const ServoLawInfo* law = find_servo_law(servo);
+  if (law == nullptr) {
+    throw InputError(source, line, field,
+                     "unknown servo '" + servo + "' (" + servo_law_names() + ")");
+  }
+  ErrorCollector errors;
+  collect_missing(model, *law, errors, source, line, field,
+                  " (robot '" + model.name + "' does not declare it; add it to robot.yaml)");
+  errors.throw_if_any();
+}
+
+RobotModel load_robot(const std::string& robot_dir, const StructureOptions& structure) {
+  RobotModel model = load_robot_model(robot_dir, structure);
+  check_robot_parameters(model);
+  return model;
+}
+
+}  // namespace motoflex
