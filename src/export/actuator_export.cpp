@@ -40,10 +40,11 @@ double subtree_inertia_kg_m2(const RobotModel& model, std::size_t actuator) {
 
 std::vector<ActuatorExport> export_actuators(const ExportInput& input) {
   const RobotModel& model = input.model;
-  const ServoExportRule& rule = servo_export_rule(input.servo);
-  const ParameterReader get(input.parameters, input.servo);
   std::vector<ActuatorExport> out(model.actuators.size());
   for (std::size_t i = 0; i < model.actuators.size(); ++i) {
+    const std::string& law = actuator_servo_name(model, input.servo, i);
+    const ServoExportRule& rule = servo_export_rule(law);
+    const ParameterReader get(input.parameters, law);
     const ActuatorSpec& spec = model.actuators[i];
     ActuatorExport& a = out[i];
     a.joint = spec.name;

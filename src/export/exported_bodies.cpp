@@ -22,8 +22,9 @@ std::vector<ExportedBody> exported_bodies(const ExportInput& input, const Eigen:
     body.inertia_kg_m2 = spec.inertia_kg_m2;
     // Same rule as the rollout (src/sim/rollout.cpp, build_bodies): the body driven by the
     // first actuator carries the bench load.
-    if (servo_law(input.servo).point_mass_arm && !spec.is_static && spec.parent_joint >= 0 &&
-        model.joints[spec.parent_joint].actuator1 == 0) {
+    if (!model.actuators.empty() &&
+        servo_law(actuator_servo_name(model, input.servo, 0)).point_mass_arm && !spec.is_static &&
+        spec.parent_joint >= 0 && model.joints[spec.parent_joint].actuator1 == 0) {
       const JointSpec& joint = model.joints[spec.parent_joint];
       Eigen::Vector3d arm = spec.com_W0_m - joint.anchor_W0_m;
       arm -= joint.axis1_W0 * joint.axis1_W0.dot(arm);
@@ -49,8 +50,18 @@ Eigen::Vector3d placement_offset_m(const RobotModel& model,
   return {0.0, 0.0, clearance_m - lowest};
 }
 
-std::string servo_description(const std::string& servo) {
-  return servo_export_rule(servo).description;
+std::string servo_description(const ExportInput& input) {
+  // One law for the robot (the usual case), or the law of each joint.
+  std::string description;
+  std::string previous;
+  for (std::size_t i = 0; i < input.model.actuators.size(); ++i) {
+    const std::string& law = actuator_servo_name(input.model, input.servo, i);
+    if (law == previous) continue;
+    if (!description.empty()) description += "; " + input.model.actuators[i].name + ": ";
+    description += servo_export_rule(law).description;
+    previous = law;
+  }
+  return description;
 }
 
 }  // namespace motoflex::detail

@@ -36,6 +36,6 @@ Eigen::Vector3d placement_offset_m(const RobotModel& model,
                                    double clearance_m);
 
 // "a: b" for the XML comments that say what an export drops.
-std::string servo_description(const std::string& servo);
+std::string servo_description(const ExportInput& input);
 
 }  // namespace motoflex::detail

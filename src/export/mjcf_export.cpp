@@ -163,7 +163,7 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
   mujoco.comment("Exported by motoflex " + std::string(version()) + " for MuJoCo 2.2.2+ from " +
                  (input.provenance.source_path.empty() ? std::string("defaults")
                                                        : input.provenance.source_path) +
-                 "; servo " + detail::servo_description(input.servo) +
+                 "; servo " + detail::servo_description(input) +
                  ". Lost in MJCF: backlash, gear spring and mass, PID integral, motor "
                  "inductance, Stribeck/load friction, contact slip, sensor effects (see the JSON "
                  "export).");

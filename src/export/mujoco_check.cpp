@@ -100,7 +100,11 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
     d->qpos[qpos[j]] = first[j];
   }
   mj_forward(m.get(), d.get());
-  const bool next_angle = servo_export_rule(input.servo).command_is_next_angle;
+  std::vector<char> next_angle(n);  // per joint: the law's target is the angle at step end
+  for (std::size_t j = 0; j < n; ++j) {
+    next_angle[j] =
+        servo_export_rule(actuator_servo_name(model, input.servo, j)).command_is_next_angle;
+  }
   for (std::size_t k = 0; k < samples.settle_steps; ++k) {
     for (std::size_t j = 0; j < n; ++j) d->ctrl[actuator[j]] = first[j];
     mj_step(m.get(), d.get());
@@ -108,8 +112,9 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
   std::vector<double> mujoco_angles(samples.steps * n);
   start = Clock::now();
   for (std::size_t k = 0; k < samples.steps; ++k) {
-    const double* target = next_angle ? &samples.next[k * n] : &samples.now[k * n];
-    for (std::size_t j = 0; j < n; ++j) d->ctrl[actuator[j]] = target[j];
+    for (std::size_t j = 0; j < n; ++j) {
+      d->ctrl[actuator[j]] = next_angle[j] ? samples.next[k * n + j] : samples.now[k * n + j];
+    }
     mj_step(m.get(), d.get());
     for (std::size_t j = 0; j < n; ++j) mujoco_angles[k * n + j] = d->qpos[qpos[j]];
   }

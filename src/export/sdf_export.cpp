@@ -177,7 +177,10 @@ void add_joint(XmlElement& model, const ExportInput& input, const JointSpec& spe
   add_axis(joint, "axis", spec.axis1_W0, axis_values(spec.actuator1));
   if (two_axes) add_axis(joint, "axis2", spec.axis2_W0, axis_values(spec.actuator2));
   for (const int actuator : {spec.actuator1, spec.actuator2}) {
-    if (actuator >= 0) add_servo_extension(joint, actuators[actuator], input.servo);
+    if (actuator >= 0) {
+      add_servo_extension(joint, actuators[actuator],
+                          actuator_servo_name(input.model, input.servo, actuator));
+    }
   }
 }
 
@@ -196,7 +199,7 @@ std::string export_sdf(const ExportInput& input) {
   sdf.comment("Exported by motoflex " + std::string(version()) + " from " +
               (input.provenance.source_path.empty() ? std::string("defaults")
                                                     : input.provenance.source_path) +
-              "; servo " + detail::servo_description(input.servo) +
+              "; servo " + detail::servo_description(input) +
               ". Joint dynamics and limits are the fitted joint-level values; <motoflex:servo> "
               "(ignored by simulators) holds the linearised servo gains and the armature, which "
               "SDF cannot express.");

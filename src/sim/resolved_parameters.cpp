@@ -25,13 +25,13 @@ const char* const kWorldNames[] = {
 }  // namespace
 
 std::vector<std::string> rollout_wide_parameter_names(const RobotModel& model,
-                                                      const ServoLawInfo& law) {
+                                                      bool point_mass_arm) {
   std::vector<std::string> names;
   for (const auto& a : model.actuators) {
     names.push_back("joint." + a.name + ".encoder_scale");
     names.push_back("joint." + a.name + ".encoder_offset_rad");
   }
-  if (law.point_mass_arm)
+  if (point_mass_arm)
     names.insert(names.end(), std::begin(kBenchLoadNames), std::end(kBenchLoadNames));
   if (has_flex_joints(model))
     names.insert(names.end(), std::begin(kFlexNames), std::end(kFlexNames));
@@ -40,15 +40,15 @@ std::vector<std::string> rollout_wide_parameter_names(const RobotModel& model,
 }
 
 ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSet& values,
-                                      const ServoLawInfo& law) {
-  const ParameterReader get(values, law.name);
+                                      bool point_mass_arm) {
+  const ParameterReader get(values, "(rollout)");
   ResolvedParameters out;
   out.encoders.resize(model.actuators.size());
   for (std::size_t i = 0; i < model.actuators.size(); ++i) {
     const std::string joint = "joint." + model.actuators[i].name + ".";
     out.encoders[i] = {get(joint + "encoder_scale"), get(joint + "encoder_offset_rad")};
   }
-  if (law.point_mass_arm) {
+  if (point_mass_arm) {
     out.bench_load = {get("bench.mass_kg"), get("bench.length_m"), get("bench.armature_kg_m2")};
     if (!(out.bench_load.mass_kg > 0.0) || !(out.bench_load.length_m > 0.0) ||
         out.bench_load.armature_kg_m2 < 0.0) {

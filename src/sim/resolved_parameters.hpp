@@ -51,13 +51,13 @@ struct ResolvedParameters {
   BenchLoad bench_load;  // laws with a point-mass arm only
 };
 
-// Reads the rollout-wide values (plus the bench arm when `law` has one). Throws ModelError
-// naming the first parameter the model does not declare, or a value that cannot be simulated.
+// Reads the rollout-wide values (plus the bench arm when the first actuator's law has one,
+// `point_mass_arm`). Throws ModelError naming the first parameter the model does not declare,
+// or a value that cannot be simulated.
 ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSet& values,
-                                      const ServoLawInfo& law);
+                                      bool point_mass_arm);
 
-// The names resolve_parameters reads for `model` (rollout-wide names, not the law's own).
-std::vector<std::string> rollout_wide_parameter_names(const RobotModel& model,
-                                                      const ServoLawInfo& law);
+// The names resolve_parameters reads for `model` (rollout-wide names, not the laws' own).
+std::vector<std::string> rollout_wide_parameter_names(const RobotModel& model, bool point_mass_arm);
 
 }  // namespace motoflex::detail

@@ -22,30 +22,56 @@ std::string closest_known(const std::set<std::string>& known, const std::string&
   return hint;
 }
 
-void collect_missing(const RobotModel& model, const ServoLawInfo& law, ErrorCollector& errors,
+// Every name the laws (as `servo` assigns them) and the rollout read that the robot lacks, each
+// once, naming the law that needs it.
+void collect_missing(const RobotModel& model, const std::string& servo, ErrorCollector& errors,
                      const std::string& source, int line, const std::string& field,
                      const std::string& advice) {
-  for (const auto& name : rollout_parameter_names(model, law.name)) {
-    if (!model.parameters.contains(name)) {
-      errors.add(source, line, field,
-                 "missing '" + name + "', required by servo '" + law.name + "'" + advice);
+  std::set<std::string> reported;
+  const auto report = [&](const std::string& name, const std::string& who) {
+    if (model.parameters.contains(name) || !reported.insert(name).second) return;
+    errors.add(source, line, field, "missing '" + name + "', required by " + who + advice);
+  };
+  for (std::size_t a = 0; a < model.actuators.size(); ++a) {
+    const ServoLawInfo& law = servo_law(actuator_servo_name(model, servo, a));
+    for (const auto& name : law.parameter_names(model, a)) {
+      report(name, "servo '" + law.name + "'");
     }
   }
+  for (const auto& name : rollout_parameter_names(model, servo)) report(name, "the rollout");
+}
+
+// Unknown law names in the robot's assignment (robot.yaml `servo:` and per-joint laws).
+bool collect_unknown_laws(const RobotModel& model, ErrorCollector& errors) {
+  bool ok = true;
+  const auto check = [&](const std::string& name) {
+    if (find_servo_law(name) != nullptr) return;
+    ok = false;
+    errors.add(model.source.yaml_path, model.source.servo_line, "servo",
+               "unknown servo '" + name + "' (" + servo_law_names() + ")");
+  };
+  check(model.default_servo);
+  for (const auto& actuator : model.actuators) {
+    if (!actuator.servo.empty() && actuator.servo != model.default_servo) check(actuator.servo);
+  }
+  return ok;
 }
 
 }  // namespace
 
 std::vector<std::string> rollout_parameter_names(const RobotModel& model,
                                                  const std::string& servo) {
-  const ServoLawInfo& law = servo_law(servo);
   std::vector<std::string> names;
   std::set<std::string> seen;
+  bool point_mass_arm = false;
   for (std::size_t a = 0; a < model.actuators.size(); ++a) {
+    const ServoLawInfo& law = servo_law(actuator_servo_name(model, servo, a));
+    if (a == 0) point_mass_arm = law.point_mass_arm;
     for (auto& name : law.parameter_names(model, a)) {
       if (seen.insert(name).second) names.push_back(std::move(name));
     }
   }
-  for (auto& name : detail::rollout_wide_parameter_names(model, law)) {
+  for (auto& name : detail::rollout_wide_parameter_names(model, point_mass_arm)) {
     if (seen.insert(name).second) names.push_back(std::move(name));
   }
   return names;
@@ -79,11 +105,8 @@ void check_robot_parameters(const RobotModel& model) {
     errors.add(file, line, "parameters." + name,
                "unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
   }
-  if (const ServoLawInfo* law = find_servo_law(model.default_servo)) {
-    collect_missing(model, *law, errors, file, model.source.parameters_line, "parameters", "");
-  } else {
-    errors.add(file, model.source.servo_line, "servo",
-               "unknown servo '" + model.default_servo + "' (" + servo_law_names() + ")");
+  if (collect_unknown_laws(model, errors)) {
+    collect_missing(model, "", errors, file, model.source.parameters_line, "parameters", "");
   }
   errors.throw_if_any();
 }
@@ -96,7 +119,7 @@ void check_servo_parameters(const RobotModel& model, const std::string& servo,
                      "unknown servo '" + servo + "' (" + servo_law_names() + ")");
   }
   ErrorCollector errors;
-  collect_missing(model, *law, errors, source, line, field,
+  collect_missing(model, servo, errors, source, line, field,
                   " (robot '" + model.name + "' does not declare it; add it to robot.yaml)");
   errors.throw_if_any();
 }

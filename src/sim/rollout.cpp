@@ -64,18 +64,29 @@ const char* to_string(RolloutEnd end) {
   return "?";
 }
 
-const ServoLawInfo& law_for(const RolloutOptions& options) {
-  const ServoLawInfo* law = find_servo_law(options.servo);
-  if (law == nullptr) {
-    throw ModelError("unknown servo '" + options.servo + "' (" + servo_law_names() + ")");
+std::vector<const ServoLawInfo*> laws_for(const RobotModel& model, const RolloutOptions& options) {
+  std::vector<const ServoLawInfo*> laws;
+  for (std::size_t i = 0; i < model.actuators.size(); ++i) {
+    const std::string& name = actuator_servo_name(model, options.servo, i);
+    const ServoLawInfo* law = find_servo_law(name);
+    if (law == nullptr) {
+      throw ModelError("unknown servo '" + name + "' (" + servo_law_names() + ")");
+    }
+    laws.push_back(law);
   }
-  return *law;
+  return laws;
+}
+
+// The pendulum bench: the first actuator's law may carry the arm as a point mass.
+bool first_law_has_point_mass_arm(const std::vector<const ServoLawInfo*>& laws) {
+  return !laws.empty() && laws.front()->point_mass_arm;
 }
 
 struct Rollout::Impl {
   const RobotModel& model;
   RolloutOptions options;
-  const ServoLawInfo& law;
+  std::vector<const ServoLawInfo*> laws;  // per actuator
+  bool point_mass_arm;
   detail::ResolvedParameters params;
 
   dWorldID world = nullptr;
@@ -111,7 +122,11 @@ struct Rollout::Impl {
   double elapsed_s = 0.0;  // since the rollout was created (settling included)
 
   Impl(const RobotModel& m, const ParameterSet& values, const RolloutOptions& o)
-      : model(m), options(o), law(law_for(o)), params(detail::resolve_parameters(m, values, law)) {}
+      : model(m),
+        options(o),
+        laws(laws_for(m, o)),
+        point_mass_arm(first_law_has_point_mass_arm(laws)),
+        params(detail::resolve_parameters(m, values, point_mass_arm)) {}
 
   ~Impl() {
     if (world != nullptr) dWorldSetStepThreadingImplementation(world, nullptr, nullptr);
@@ -170,7 +185,7 @@ void Rollout::Impl::build_bodies() {
       double mass = spec.mass_kg;
       Eigen::Matrix3d inertia = spec.inertia_kg_m2;
       // Bench: the arm is a point mass at bench.length_m from the axis plus the armature.
-      if (law.point_mass_arm && spec.parent_joint >= 0 &&
+      if (point_mass_arm && spec.parent_joint >= 0 &&
           model.joints[spec.parent_joint].actuator1 == 0) {
         const JointSpec& joint = model.joints[spec.parent_joint];
         Eigen::Vector3d arm = spec.com_W0_m - joint.anchor_W0_m;
@@ -290,7 +305,6 @@ void Rollout::Impl::build_joints() {
 void Rollout::Impl::build_actuators(const ParameterSet& values) {
   const std::size_t n = model.actuators.size();
   applied_torque_nm.assign(n, 0.0);
-  const ParameterReader reader(values, law.name);
   for (std::size_t i = 0; i < n; ++i) {
     const ActuatorSpec& spec = model.actuators[i];
     detail::OdeAxis axis;
@@ -301,7 +315,8 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
     axes.push_back(axis);
     encoders.emplace_back(params.encoder, options.dt_s,
                           RandomStream({options.seed, kEncoderNoisePurpose, i}));
-    servos.push_back(law.create({model, i, reader, options.dt_s, options.gear_substeps}));
+    const ParameterReader reader(values, laws[i]->name);
+    servos.push_back(laws[i]->create({model, i, reader, options.dt_s, options.gear_substeps}));
     const double damping_nm_s_per_rad = servos.back()->damping_row_nm_s_per_rad();
     if (damping_nm_s_per_rad > 0.0) add_damping_row(i, damping_nm_s_per_rad);
   }

@@ -29,7 +29,8 @@ struct FitProvenance {
 struct ExportInput {
   const RobotModel& model;
   ParameterSet parameters;
-  std::string servo = "motoflex";  // the servo law the values belong to
+  // The servo law the values belong to (empty: each joint's own, actuator_servo_name).
+  std::string servo = "motoflex";
   FitProvenance provenance;
   double dt_s = 0.001;  // physics step the parameters were fitted at (MJCF/SDF time step)
 };

@@ -64,6 +64,7 @@ struct JointSpec {
 struct ActuatorSpec {
   std::string name;   // URDF joint name, e.g. "LKneePitch"
   std::string group;  // gear / servo group from robot.yaml, e.g. "A"
+  std::string servo;  // servo law of this joint; empty = the robot's default_servo
   int joint = -1;     // index into RobotModel::joints
   int axis = 1;       // 1 or 2
   double lower_rad = -std::numeric_limits<double>::infinity();

@@ -16,8 +16,9 @@ namespace motoflex {
 // entry point for reading a robot. Throws InputError(s) naming robot.yaml's lines.
 RobotModel load_robot(const std::string& robot_dir, const StructureOptions& structure);
 
-// Every parameter name a rollout of `model` with servo law `servo` reads, in a stable order.
-// Throws std::invalid_argument for an unknown law.
+// Every parameter name a rollout of `model` with servo law `servo` reads, in a stable order
+// (`servo` empty: each joint's own law, actuator_servo_name). Throws std::invalid_argument for
+// an unknown law.
 std::vector<std::string> rollout_parameter_names(const RobotModel& model, const std::string& servo);
 
 // Every name a robot.yaml of this model may declare: what any law or the rollout may read.

@@ -25,13 +25,15 @@ struct RolloutOptions {
   StepSolver solver = StepSolver::kStep;
   int quickstep_iterations = 20;  // dWorldQuickStep only
   int gear_substeps = 100;        // gear sub-steps per physics step (motoflex servo)
-  std::string servo = "ideal";    // servo law of every actuator (servo_law.hpp registry)
-  double settle_s = 0.0;          // hold the first commanded pose this long before t = 0
-  std::uint64_t seed = 1;         // sensor-noise stream
-  bool stop_on_fall = true;       // end the rollout at the first fall
-  bool record_torques = false;    // fill RolloutResult::joint_torque_nm
-  bool hold_torso = false;        // the root body hangs fixed in the air, feet 0.1 m above the
-                                  // ground (excitation motions without ground contact)
+  // Servo law of every actuator (servo_law.hpp registry); empty = each joint's own law as the
+  // robot assigns it (actuator_servo_name).
+  std::string servo = "ideal";
+  double settle_s = 0.0;        // hold the first commanded pose this long before t = 0
+  std::uint64_t seed = 1;       // sensor-noise stream
+  bool stop_on_fall = true;     // end the rollout at the first fall
+  bool record_torques = false;  // fill RolloutResult::joint_torque_nm
+  bool hold_torso = false;      // the root body hangs fixed in the air, feet 0.1 m above the
+                                // ground (excitation motions without ground contact)
 };
 
 enum class RolloutEnd {

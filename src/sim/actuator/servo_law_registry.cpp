@@ -39,6 +39,13 @@ const ServoLawInfo& servo_law(const std::string& name) {
   throw std::invalid_argument("unknown servo '" + name + "' (" + servo_law_names() + ")");
 }
 
+const std::string& actuator_servo_name(const RobotModel& model, const std::string& override_servo,
+                                       std::size_t actuator) {
+  if (!override_servo.empty()) return override_servo;
+  const std::string& own = model.actuators.at(actuator).servo;
+  return own.empty() ? model.default_servo : own;
+}
+
 double ParameterReader::operator()(const std::string& name) const {
   const auto index = values_.registry().find(name);
   if (!index) {

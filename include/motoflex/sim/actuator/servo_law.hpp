@@ -105,5 +105,10 @@ const ServoLawInfo* find_servo_law(const std::string& name);
 const ServoLawInfo& servo_law(const std::string& name);
 // "motoflex|velocity|..." for messages.
 std::string servo_law_names();
+// The name of the law that drives `actuator`: `override_servo` when not empty (a scenario's or
+// the command line's `servo:`), else the joint's own (ActuatorSpec::servo), else the robot's
+// default (robot.yaml `servo:`).
+const std::string& actuator_servo_name(const RobotModel& model, const std::string& override_servo,
+                                       std::size_t actuator);
 
 }  // namespace motoflex
