@@ -322,6 +322,7 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
     ActuatorSpec actuator;
     actuator.name = a.joint;
     actuator.group = a.group;
+    actuator.servo_scope = a.group;
     actuator.joint = joint;
     actuator.axis = axis;
     const auto& tj = tree.joints[tree.joint_index(a.joint)];

@@ -65,6 +65,9 @@ struct ActuatorSpec {
   std::string name;   // URDF joint name, e.g. "LKneePitch"
   std::string group;  // gear / servo group from robot.yaml, e.g. "A"
   std::string servo;  // servo law of this joint; empty = the robot's default_servo
+  // Prefix of this joint's servo parameters, `servo.<servo_scope>.<name>_<unit>`: the joint or
+  // group named by its robot.yaml `servos:` entry (laws with per-joint/group parameters).
+  std::string servo_scope;
   int joint = -1;     // index into RobotModel::joints
   int axis = 1;       // 1 or 2
   double lower_rad = -std::numeric_limits<double>::infinity();
