@@ -7,7 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "motoflex/fit/fit_runner.hpp"
+#include "fit_console.hpp"
+#include "motoflex/fit/fit_problem.hpp"
 #include "motoflex_es/mpi_evaluator.hpp"
 #include "motoflex_es/mpi_world.hpp"
 
@@ -67,7 +68,7 @@ std::optional<FitConfig> load_on_every_rank(const motoflex_es::MpiWorld& world,
 
 int run_fit_on_ranks(const std::function<FitConfig()>& load_config, bool resume) {
   const int launched = motoflex_es::launcher_process_count();
-  if (launched <= 1) return run_fit(load_config(), resume);
+  if (launched <= 1) return run_fit_on_console(load_config(), resume);
   if (!motoflex_es::mpi_built_in()) {
     throw std::runtime_error("started as one of " + std::to_string(launched) +
                              " MPI processes, but this build has no MPI support (reconfigure "
@@ -91,10 +92,10 @@ int run_fit_on_ranks(const std::function<FitConfig()>& load_config, bool resume)
     motoflex_es::serve_mpi_evaluations(world, problem, config->threads);
     return 0;
   }
-  // The evaluator's destructor releases the workers, also when run_fit throws.
+  // The evaluator's destructor releases the workers, also when the fit throws.
   motoflex_es::MpiEvaluator evaluator(world, config->threads);
   std::printf("evaluating on %s\n", evaluator.name().c_str());
-  return run_fit(*config, resume, &evaluator);
+  return run_fit_on_console(*config, resume, &evaluator);
 }
 
 }  // namespace motoflex::cli

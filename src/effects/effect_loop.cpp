@@ -34,7 +34,7 @@ std::string iteration_dir(const fs::path& out, std::size_t iteration, const std:
 // The effects a fit already models: those it lists and those whose parameters it all frees.
 std::vector<std::string> modelled_effects(const FitConfig& config) {
   std::set<std::string> free_names;
-  for (const auto& p : config.free) free_names.insert(p.targets.begin(), p.targets.end());
+  for (const auto& p : config.free_parameters) free_names.insert(p.targets.begin(), p.targets.end());
   std::vector<std::string> out;
   for (const Effect& effect : effect_library()) {
     const bool listed = std::find(config.effects.begin(), config.effects.end(), effect.name) !=

@@ -11,7 +11,8 @@
 #include "fit_test_support.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/fit/fit_config.hpp"
-#include "motoflex/fit/fit_runner.hpp"
+#include "motoflex/fit/fit_problem.hpp"
+#include "motoflex/fit/fit_session.hpp"
 
 namespace motoflex::testing {
 namespace {
@@ -27,7 +28,7 @@ TEST(FitNlopt, GlobalAlgorithmsRunToTheEvaluationBudget) {
     const std::string fit =
         write_pendulum_fit(dir, kHiddenNone, "{kind: nlopt, algorithm: " + algorithm + "}",
                            "{evaluations: 30}", "out: " + (dir / "run").string() + "\n");
-    ASSERT_EQ(run_fit(load_fit_config(fit), false), 0) << algorithm;
+    FitSession(load_fit_config(fit), false).run();
     const auto summary = nlohmann::json::parse(read_text(dir / "run" / "summary.json"));
     EXPECT_EQ(summary["evaluations"].get<int>(), 30) << algorithm;
     // One point per generation: 30 rows under the header.
