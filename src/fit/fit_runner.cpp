@@ -8,10 +8,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
+#include "motoflex/fit/fit_inputs.hpp"
 #include "motoflex/fit/fit_report.hpp"
-#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/io/plot_script.hpp"
 #include "motoflex_es/checkpoint.hpp"
 #include "motoflex_es/cma_es.hpp"
@@ -185,6 +186,7 @@ int run_fit(const FitConfig& config, bool resume, motoflex_es::Evaluator* evalua
   run["config_hash"] = config.hash;
   run["identity"] = config.identity;
   write_file_atomically((dir / "run.json").string(), run.dump(2) + "\n");
+  write_file_atomically((dir / "inputs.json").string(), fit_inputs_json(config).dump(2) + "\n");
 
   std::unique_ptr<motoflex_es::Evaluator> own_evaluator;
   if (evaluator == nullptr) {
