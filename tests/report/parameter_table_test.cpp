@@ -111,7 +111,11 @@ TEST(ParameterRows, WithoutInputsTheFittedValuesAloneWithUnitsFromTheirNames) {
     EXPECT_TRUE(std::isnan(row.lower));
     EXPECT_FALSE(at_bound(row));
   }
-  EXPECT_EQ(rows[0].unit, "V/rad");
+  // best.json's object is read in name order.
+  EXPECT_EQ(rows[0].name, "joint.*Roll.friction_nm");
+  EXPECT_EQ(rows[0].unit, "N·m");
+  EXPECT_EQ(rows[1].unit, "V/rad");
+  EXPECT_EQ(rows[1].fitted, 321.5);
   EXPECT_NE(parameter_table_html(rows).find("n/a"), std::string::npos);
   EXPECT_NE(parameter_table_html({}).find("No free parameters"), std::string::npos);
 }

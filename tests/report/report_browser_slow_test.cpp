@@ -100,7 +100,7 @@ TEST(ReportBrowser, ARealFitsReportDrawsEveryFigureWithoutJavaScriptErrors) {
     ++svgs;
   }
   EXPECT_GE(svgs, 3u);
-  EXPECT_EQ(dom.output.find("plot-error"), std::string::npos);
+  EXPECT_EQ(dom.output.find("class=\"plot-error\""), std::string::npos);
 
   // (b) A screenshot that is a picture: many colours, not one.
   const fs::path png = dir / "report.png";
