@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "motoflex/report/html_text.hpp"
 #include "motoflex/report/markdown_html.hpp"

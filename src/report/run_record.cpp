@@ -1,7 +1,6 @@
 #include "motoflex/report/run_record.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -38,7 +37,6 @@ double parse_number(const std::string& field, const std::string& path, int line,
   // strtod reads "inf" and "nan", which generations.csv holds for a batch without a median.
   const char* begin = field.c_str();
   char* end = nullptr;
-  errno = 0;
   const double value = std::strtod(begin, &end);
   if (end == begin || *end != '\0') throw InputError(path, line, column, "not a number: " + field);
   return value;
