@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <optional>
 
 #include "motoflex/report/html_text.hpp"
 #include "motoflex/report/markdown_html.hpp"
@@ -59,6 +60,19 @@ std::string robot_rows(const json& robots, const char* set) {
             "</td></tr>\n";
   }
   return html;
+}
+
+// The joint with the largest residual RMS: the channel a log opens on. The torso IMU is shown
+// only when no joint is (a fit scores the IMU only with imu_weight > 0, so its error is often
+// large and beside the point).
+std::size_t worst_channel(const LogComparison& log) {
+  std::optional<std::size_t> worst;
+  for (std::size_t c = 0; c < log.channels.size(); ++c) {
+    const double rms = log.channels[c].rms_deg;
+    if (log.channels[c].name.rfind("imu.", 0) == 0 || !std::isfinite(rms)) continue;
+    if (!worst || rms > log.channels[*worst].rms_deg) worst = c;
+  }
+  return worst.value_or(0);
 }
 
 double number_or_nan(const json& value) {
@@ -159,11 +173,7 @@ std::string logs_section_html(const std::vector<LogComparison>& logs, std::size_
   html += "</p>\n";
   for (std::size_t i = 0; i < logs.size(); ++i) {
     const LogComparison& log = logs[i];
-    std::size_t worst = 0;
-    for (std::size_t c = 0; c < log.channels.size(); ++c) {
-      const double rms = log.channels[c].rms_deg;
-      if (std::isfinite(rms) && !(rms <= log.channels[worst].rms_deg)) worst = c;
-    }
+    const std::size_t worst = worst_channel(log);
     const std::string id = "log-" + std::to_string(i);
     html += "<div class=\"log\"><div class=\"log-head\"><h3>" + escape_html(log.name) +
             " <span class=\"tag\">" + escape_html(log.set) +

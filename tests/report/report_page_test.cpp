@@ -89,6 +89,22 @@ TEST(RenderReport, AFullFitRunDirHasEverySection) {
   EXPECT_TRUE(data["correlation"].is_null());
 }
 
+TEST(RenderReport, ALogOpensOnTheWorstJointEvenWhenTheImuIsWorse) {
+  const fs::path dir = fresh_dir("report_page_imu");
+  motoflex::testing::write_fit_run_dir(dir);
+  JointLog measured = motoflex::testing::two_joint_log(300);
+  JointLog simulated = motoflex::testing::two_joint_log(300, -0.01);
+  measured.imu_roll_rad.assign(300, 0.1);  // 5.7 deg off, ten times the knee's error
+  measured.imu_pitch_rad.assign(300, 0.0);
+  simulated.imu_roll_rad.assign(300, 0.0);
+  simulated.imu_pitch_rad.assign(300, 0.0);
+  write_joint_log((dir / "data" / "walk.csv").string(), measured);
+  write_joint_log((dir / "best" / "walk.csv").string(), simulated);
+  const std::string html = render_report(read_run_dir(dir.string()));
+  EXPECT_NE(html.find("<option value=\"1\" selected>knee"), std::string::npos);
+  EXPECT_NE(html.find("<option value=\"2\">imu.roll (RMS 5.73 deg)"), std::string::npos);
+}
+
 TEST(RenderReport, UncertaintyResidualsAndThinningWhenTheRunDirHasThem) {
   const fs::path dir = fresh_dir("report_page_extras");
   motoflex::testing::write_fit_run_dir(dir, true, 5000);

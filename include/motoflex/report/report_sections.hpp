@@ -20,8 +20,8 @@ std::string summary_section_html(const RunRecord& record);
 // The convergence figure's place, or a note that generations.csv is missing.
 std::string convergence_section_html(const RunRecord& record);
 
-// Per log: a joint selector (preselecting the joint with the largest residual RMS), the figure's
-// place and a table of every channel's residual RMS and largest error.
+// Per log: a channel selector (preselecting the joint, not IMU angle, with the largest residual
+// RMS), the figure's place and a table of every channel's residual RMS and largest error.
 std::string logs_section_html(const std::vector<LogComparison>& logs, std::size_t max_points);
 
 // The parameter table and the correlation heatmap's place (or "not available").
