@@ -161,8 +161,8 @@ std::string logs_section_html(const std::vector<LogComparison>& logs, std::size_
   for (const auto& log : logs) thinned = thinned || log.thinned;
   html +=
       "<p class=\"note\">The measured angle, the best parameters' simulated angle and the "
-      "residual beneath (shared time axis: drag to zoom either). Each log opens on the "
-      "channel with the largest residual RMS.";
+      "residual beneath (shared time axis: drag to zoom either). Each log opens on the joint "
+      "with the largest residual RMS; the selector holds the others (and the torso IMU).";
   if (thinned) {
     html += " Logs longer than " + std::to_string(max_points) + " frames are thinned to at most " +
             std::to_string(max_points) +
