@@ -37,6 +37,14 @@ TEST(ReportCli, AFitWritesItsReportAndInputsAtTheEnd) {
   const std::string log = inputs["train_logs"][0].get<std::string>();
   EXPECT_TRUE(fs::path(log).is_absolute()) << log;
   EXPECT_TRUE(fs::equivalent(log, dir / "data" / "swing.csv")) << log;
+
+  // `resume` writes it too, with the generations it added.
+  fs::remove(dir / "run" / "report.html");
+  const auto resumed = run_motoflex("resume " + (dir / "run").string() + " --max-generations 3");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.stderr_text;
+  EXPECT_NE(resumed.stdout_text.find("report: "), std::string::npos) << resumed.stdout_text;
+  EXPECT_NE(read_text(dir / "run" / "report.html").find("<tr><td>generations</td><td>3</td>"),
+            std::string::npos);
 }
 
 TEST(ReportCli, AReportThatCannotBeWrittenIsAWarningNotAFailedFit) {
