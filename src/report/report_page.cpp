@@ -5,6 +5,7 @@
 
 #include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/build_info.hpp"
+#include "motoflex/core/error.hpp"
 #include "motoflex/report/figure_data.hpp"
 #include "motoflex/report/html_text.hpp"
 #include "motoflex/report/page_assets.hpp"
@@ -58,7 +59,14 @@ std::string render_report(const RunRecord& record, const ReportOptions& options)
   const std::string summary_file =
       (std::filesystem::path(record.fit_dir.empty() ? record.dir : record.fit_dir) / "summary.json")
           .string();
-  const ParameterUncertainty uncertainty = read_parameter_uncertainty(record.summary, summary_file);
+  // The uncertainty keys are written by a later stage of the fit; if their shape ever differs
+  // from what parameter_uncertainty.hpp reads, the page says so and shows the rest.
+  ParameterUncertainty uncertainty;
+  try {
+    uncertainty = read_parameter_uncertainty(record.summary, summary_file);
+  } catch (const InputError& error) {
+    notes.push_back(std::string("parameter uncertainty not shown: ") + error.what());
+  }
   const std::vector<ParameterRow> rows =
       parameter_rows(record.inputs, record.best, record.summary, uncertainty);
 

@@ -137,6 +137,17 @@ TEST(RenderReport, ARunDirWithoutOptionalFilesStillMakesAPage) {
   EXPECT_TRUE(page_data(html)["logs"].empty());
 }
 
+TEST(RenderReport, UncertaintyKeysOfAnotherShapeAreANoteNotALostReport) {
+  const fs::path dir = fresh_dir("report_page_bad_uncertainty");
+  motoflex::testing::write_fit_run_dir(dir);
+  write_text(dir / "summary.json", R"({"name": "toy_fit", "correlation": [[1, 0.5], [0.5, 1]]})");
+  const std::string html = render_report(read_run_dir(dir.string()));
+  EXPECT_NE(html.find("parameter uncertainty not shown: " + (dir / "summary.json").string() +
+                      ": correlation: not an object"),
+            std::string::npos);
+  EXPECT_NE(html.find("id=\"log-0-plot\""), std::string::npos);
+}
+
 TEST(RenderReport, AMeasuredLogThatMovedIsANoteAndTheRestIsShown) {
   const fs::path dir = fresh_dir("report_page_moved_log");
   motoflex::testing::write_fit_run_dir(dir);
