@@ -18,5 +18,6 @@ CommandRunner add_titan_command(CLI::App& app);
 CommandRunner add_export_command(CLI::App& app);
 CommandRunner add_residuals_command(CLI::App& app);
 CommandRunner add_loop_command(CLI::App& app);
+CommandRunner add_report_command(CLI::App& app);
 
 }  // namespace motoflex::cli

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   runners["export"] = motoflex::cli::add_export_command(app);
   runners["residuals"] = motoflex::cli::add_residuals_command(app);
   runners["loop"] = motoflex::cli::add_loop_command(app);
+  runners["report"] = motoflex::cli::add_report_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -6,6 +6,7 @@
 
 #include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/error.hpp"
+#include "motoflex/fit/fit_inputs.hpp"
 #include "motoflex_es/checkpoint.hpp"
 #include "motoflex_es/cma_es.hpp"
 #include "motoflex_es/mu_plus_lambda.hpp"
@@ -81,6 +82,9 @@ void RunDir::write_run_json() const {
   run["config_hash"] = config_.hash;
   run["identity"] = config_.identity;
   write_file_atomically((fs::path(dir_) / "run.json").string(), run.dump(2) + "\n");
+  // What a report of the run needs besides its results: the measured logs, units and bounds.
+  write_file_atomically((fs::path(dir_) / "inputs.json").string(),
+                        fit_inputs_json(config_).dump(2) + "\n");
 }
 
 void RunDir::append_generation(const motoflex_es::GenerationReport& report, double sigma,
