@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "motoflex/sim/resolved_parameters.hpp"
 #include "motoflex/core/error.hpp"
+#include "motoflex/sim/resolved_parameters.hpp"
 
 namespace motoflex {
 namespace {
@@ -56,7 +56,8 @@ std::vector<ActuatorExport> export_actuators(const ExportInput& input) {
     ActuatorExport& a = out[i];
     a.joint = spec.name;
     a.group = spec.group;
-    a.limited = std::isfinite(spec.lower_rad) && std::isfinite(spec.upper_rad);
+    // A robot without joint stops (robot.yaml joint_stops: false) exports none either.
+    a.limited = model.joint_stops && std::isfinite(spec.lower_rad) && std::isfinite(spec.upper_rad);
     a.lower_rad = a.limited ? spec.lower_rad : 0.0;
     a.upper_rad = a.limited ? spec.upper_rad : 0.0;
     switch (input.servo) {
