@@ -74,15 +74,21 @@ def walk_figure(out, walk, runs, signal, png):
     plt.close(fig)
 
 
-def zmp_figure(out, zmp, png):
+def zmp_figure(out, result, png):
+    zmp = result["zmp_experiment"]
     variants = zmp.get("variants", {})
     if not variants:
         return
     fig, axes = plt.subplots(len(variants), 1, figsize=(9, 3.4 * len(variants)), squeeze=False)
     defaults = zmp.get("defaults", {})
-    for ax, (variant, result) in zip(axes[:, 0], variants.items()):
-        chosen = result.get("chosen") or {}
-        for trial in result["trials"]:
+    for ax, (variant, trials_of) in zip(axes[:, 0], variants.items()):
+        own = result.get(zmp["walk"], {}).get(variant)
+        if own and "series" in own:
+            data = read_series(os.path.join(out, own["series"]))
+            ax.plot(data["time_s"], [math.degrees(v) for v in data["roll_rad"]], "k--", lw=1.0,
+                    label="walk's own ZMP")
+        chosen = trials_of["chosen"] or {}
+        for trial in trials_of["trials"]:
             if "unplannable" in trial:
                 ax.plot([], [], " ", label="%s = %g: cannot be planned" %
                         (trial["option"], trial["value"]))
@@ -118,7 +124,7 @@ def main():
         result = json.load(f)
     for walk, figure in result.get("figures", {}).items():
         if walk == "zmp_experiment":
-            zmp_figure(args.dir, result["zmp_experiment"], figure["png"])
+            zmp_figure(args.dir, result, figure["png"])
         else:
             walk_figure(args.dir, walk, result[walk], figure["signal"], figure["png"])
 

@@ -58,7 +58,9 @@ struct NaoWalkParams {
   // a jump in velocity, and the support torques change abruptly at the phase changes (the
   // sudden change Aldebaran blames for the Nao's sideways problem, seed 001 §5); 1 moves it
   // along a quintic smoothstep (zero velocity and acceleration at both ends); in between blends
-  // the two. The same path, only the timing along it changes.
+  // the two. The same path, only the timing along it changes. Toe-off waits until the ZMP has
+  // passed the rear toe edge, which comes later on a smoothstep: long steps reach less (200 mm/s
+  // at 2 s with toe-off and heel strike plans up to 197 mm/s at 0.5, 191 mm/s at 1).
   double zmp_transfer_smoothing = 0.0;
   // Torso shifted forward of the CoM the mass model asks for (compensates what the cart-table
   // model leaves out).

@@ -66,6 +66,15 @@ std::string series_csv(const RolloutResult& r) {
   return text;
 }
 
+// A bundled file relative to motoflex's data directory, so that the JSON does not depend on
+// where the checkout lives; any other path as given.
+std::string shown_path(const std::string& path) {
+  const std::string data = std::filesystem::path(data_directory()).lexically_normal().string();
+  const std::string normal = std::filesystem::path(path).lexically_normal().string();
+  if (!data.empty() && normal.rfind(data + "/", 0) == 0) return normal.substr(data.size() + 1);
+  return path;
+}
+
 }  // namespace
 
 nlohmann::ordered_json seed001_json(const Seed001Config& config, const Seed001Results& results) {
@@ -110,7 +119,7 @@ nlohmann::ordered_json seed001_json(const Seed001Config& config, const Seed001Re
         {"png", (walk.figure == "pitch" ? "fig3_pitch_" : "fig4_roll_") + walk.name + ".png"}};
   }
   if (results.zmp) j["figures"]["zmp_experiment"] = {{"png", "zmp_" + results.zmp->walk + ".png"}};
-  j["meta"] = {{"config", config.path}, {"motoflex", version()}};
+  j["meta"] = {{"config", shown_path(config.path)}, {"motoflex", version()}};
   return j;
 }
 
