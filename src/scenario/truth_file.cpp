@@ -59,21 +59,13 @@ TruthFile load_truth_file(const std::string& path) {
 Scenario truth_recording_scenario(const TruthFile& truth, std::size_t index,
                                   const ScenarioOverrides& extra) {
   const TruthRecording& recording = truth.recordings.at(index);
-  ScenarioOverrides overrides = truth.overrides;
-  const auto take = [](auto& target, const auto& source) {
-    if (source) target = source;
-  };
-  take(overrides.motion_log, extra.motion_log);
-  take(overrides.motion_scenario, extra.motion_scenario);
-  take(overrides.solver, extra.solver);
-  take(overrides.servo, extra.servo);
-  take(overrides.flex_sub_bodies, extra.flex_sub_bodies);
-  take(overrides.gear_substeps, extra.gear_substeps);
-  take(overrides.universal_joints, extra.universal_joints);
-  take(overrides.settle_s, extra.settle_s);
-  take(overrides.duration_s, extra.duration_s);
-  overrides.walk_options = extra.walk_options;
-  overrides.motion_optional = extra.motion_optional;
+  // The caller's overrides, with the truth's servo and physics where the caller sets none (a
+  // truth file sets only these four).
+  ScenarioOverrides overrides = extra;
+  if (!overrides.servo) overrides.servo = truth.overrides.servo;
+  if (!overrides.flex_sub_bodies) overrides.flex_sub_bodies = truth.overrides.flex_sub_bodies;
+  if (!overrides.gear_substeps) overrides.gear_substeps = truth.overrides.gear_substeps;
+  if (!overrides.settle_s) overrides.settle_s = truth.overrides.settle_s;
   // The truth values go on top of the scenario's; a parameter file given by the caller wins.
   overrides.parameters_json.reset();
   Scenario scenario = load_scenario(recording.scenario_path, overrides);
