@@ -16,12 +16,8 @@
 
 #include "commands.hpp"
 #include "motoflex/core/error.hpp"
-#include "motoflex/export/json_export.hpp"
-#include "motoflex/export/mjcf_export.hpp"
+#include "motoflex/export/exporter.hpp"
 #include "motoflex/export/mujoco_check.hpp"
-#include "motoflex/export/parser_check.hpp"
-#include "motoflex/export/sdf_export.hpp"
-#include "motoflex/export/urdf_export.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/motion/log_commands.hpp"
 #include "motoflex/sim/robot_parameter_check.hpp"
@@ -68,9 +64,9 @@ nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
 }
 
 int run(const ExportArgs& args) {
-  if (args.format != "json" && args.format != "urdf" && args.format != "sdf" &&
-      args.format != "mjcf") {
-    throw InputError("", 0, "--format", "expected json, urdf, sdf or mjcf");
+  const Exporter* exporter = find_exporter(args.format);
+  if (exporter == nullptr) {
+    throw InputError("", 0, "--format", "expected one of " + exporter_formats());
   }
   if (!args.check_log.empty() && args.format != "mjcf") {
     throw InputError("", 0, "--check-mujoco", "needs --format mjcf");
@@ -104,21 +100,10 @@ int run(const ExportArgs& args) {
   std::string text;
   std::string parser_complaint;
   try {
-    if (args.format == "json") {
-      text = export_json(input);
-      if (!nlohmann::json::accept(text)) parser_complaint = "not valid JSON";
-    } else if (args.format == "urdf") {
-      text = export_urdf(input);
-      parser_complaint = urdfdom_errors(text);
-    } else if (args.format == "sdf") {
-      text = export_sdf(input);
-      parser_complaint = sdformat_errors(text);
-    } else {
-      MjcfOptions mjcf;
-      mjcf.armature = !args.no_armature;
-      text = export_mjcf(input, mjcf);
-      parser_complaint = mujoco_errors(text);
-    }
+    ExportOptions options;
+    options.armature = !args.no_armature;
+    text = exporter->write(input, options);
+    parser_complaint = exporter->read_back_errors(text);
   } catch (const ModelError& error) {
     std::fprintf(stderr, "motoflex: cannot export: %s\n", error.what());
     return 1;
@@ -132,7 +117,7 @@ int run(const ExportArgs& args) {
   }
   if (!parser_complaint.empty()) {
     std::fprintf(stderr, "motoflex: %s rejects the %s export %s: %s\n",
-                 parser_name(args.format).c_str(), args.format.c_str(), args.out.c_str(),
+                 exporter->reader_name().c_str(), args.format.c_str(), args.out.c_str(),
                  parser_complaint.c_str());
     return 1;
   }
@@ -143,7 +128,7 @@ int run(const ExportArgs& args) {
   summary["robot"] = model.name;
   summary["servo"] = servo;
   summary["parameters"] = args.parameters;
-  summary["read_back_by"] = args.format == "json" ? "nlohmann::json" : parser_name(args.format);
+  summary["read_back_by"] = exporter->reader_name();
   if (!log_parameters.empty()) summary["log_parameters"] = log_parameters;
   if (!args.check_log.empty()) {
     MujocoCheckOptions options;
@@ -176,7 +161,7 @@ CommandRunner add_export_command(CLI::App& app) {
   sub->add_option("parameters", args->parameters, "best.json of a fit, or a parameter JSON")
       ->required();
   sub->add_option("--robot", args->robot, "robot folder (robot.yaml + URDF)")->required();
-  sub->add_option("--format", args->format, "json | urdf | sdf | mjcf")->required();
+  sub->add_option("--format", args->format, exporter_formats())->required();
   sub->add_option("--out", args->out, "output file")->required();
   sub->add_option("--servo", args->servo,
                   "servo law the parameters belong to (default: the robot's)");

@@ -99,7 +99,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
                     model,   ParameterSet(model->parameters),
                     rollout, {},
                     100.0,   {},
-                    {}};
+                    {},      {}};
   if (const auto parameters = root.find("parameters")) {
     for (const auto& [name, value] : parameters->entries()) {
       if (!model->parameters.contains(name)) {
@@ -113,10 +113,12 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   if (overrides.motion_log) {
     scenario.commands = read_log_commands(*model, *overrides.motion_log, scenario.parameters,
                                           scenario.log_parameters, &scenario.motion_description);
-  } else if (overrides.motion_optional && !root.has("motion")) {
+  } else if (overrides.motion_optional && !overrides.motion_scenario && !root.has("motion")) {
     scenario.motion_description = "none";
   } else {
-    const YamlValue motion = root.at("motion");
+    const YamlValue motion = overrides.motion_scenario
+                                 ? YamlValue::load_file(*overrides.motion_scenario).at("motion")
+                                 : root.at("motion");
     motion.require_keys_within({"log", "keyframes", "stand", "walk", "kick", "titan_crawl",
                                 "titan_updown", "titan_stand", "excitation"});
     if (motion.entries().size() != 1) {
@@ -147,10 +149,11 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
       scenario.commands = keyframe_trajectory(frames, rate_hz);
       scenario.log_rate_hz = rate_hz;
       scenario.motion_description = "keyframes (" + std::to_string(frames.size()) + " frames)";
-    } else if (auto nao = detail::nao_motion_from_yaml(motion, *model)) {
+    } else if (auto nao = detail::nao_motion_from_yaml(motion, *model, overrides.walk_options)) {
       scenario.commands = std::move(nao->commands);
       scenario.log_rate_hz = nao->rate_hz;
       scenario.motion_description = nao->description;
+      scenario.walk_plan = std::move(nao->walk_plan);
     } else if (auto excitation = detail::excitation_motion_from_yaml(motion, *model)) {
       scenario.commands = std::move(*excitation);
       scenario.motion_description = "excitation";
