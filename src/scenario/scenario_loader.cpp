@@ -26,6 +26,46 @@ std::vector<double> pose_from_yaml(const RobotModel& model, const YamlValue& pos
   return out;
 }
 
+// Reads every key of a `physics:` section that is present into `structure` and `rollout`,
+// leaving the others as they are (a truth file's section goes on top of a scenario's).
+void read_physics(const YamlValue& physics, StructureOptions& structure, RolloutOptions& rollout) {
+  physics.require_keys_within({"dt_s", "solver", "quickstep_iterations", "quickstep_w",
+                               "gear_substeps", "flex_sub_bodies", "flex_model", "max_contacts",
+                               "universal_joints", "settle_s", "hold_torso"});
+  read_step_settings(physics, rollout);
+  rollout.quickstep_iterations =
+      physics.get_int("quickstep_iterations", rollout.quickstep_iterations);
+  if (rollout.quickstep_iterations < 1) physics.at("quickstep_iterations").fail("must be >= 1");
+  rollout.quickstep_w = physics.get_double("quickstep_w", rollout.quickstep_w);
+  if (!(rollout.quickstep_w > 0.0 && rollout.quickstep_w < 2.0)) {
+    physics.at("quickstep_w").fail("must be in (0, 2) (SOR over-relaxation)");
+  }
+  rollout.gear_substeps = physics.get_int("gear_substeps", rollout.gear_substeps);
+  if (rollout.gear_substeps < 1) physics.at("gear_substeps").fail("must be >= 1");
+  structure.flex_sub_bodies = physics.get_int("flex_sub_bodies", structure.flex_sub_bodies);
+  if (structure.flex_sub_bodies < 1 || structure.flex_sub_bodies > 16) {
+    physics.at("flex_sub_bodies").fail("must be between 1 and 16");
+  }
+  if (const auto flex_model = physics.find("flex_model")) {
+    const std::string name = flex_model->as_string();
+    if (name == "implicit") {
+      rollout.flex_model = FlexModel::kImplicit;
+    } else if (name == "explicit_cfm") {
+      rollout.flex_model = FlexModel::kExplicitCfm;
+    } else {
+      flex_model->fail("expected 'implicit' or 'explicit_cfm'");
+    }
+  }
+  rollout.max_contacts_per_foot = physics.get_int("max_contacts", rollout.max_contacts_per_foot);
+  if (rollout.max_contacts_per_foot < 1 || rollout.max_contacts_per_foot > 64) {
+    physics.at("max_contacts").fail("must be between 1 and 64");
+  }
+  structure.universal_joints = physics.get_bool("universal_joints", structure.universal_joints);
+  rollout.settle_s = physics.get_double("settle_s", rollout.settle_s);
+  if (rollout.settle_s < 0.0) physics.at("settle_s").fail("must be >= 0");
+  rollout.hold_torso = physics.get_bool("hold_torso", rollout.hold_torso);
+}
+
 }  // namespace
 
 std::optional<StepSolver> parse_step_solver(const std::string& text) {
@@ -49,26 +89,12 @@ void read_step_settings(const YamlValue& physics, RolloutOptions& rollout) {
 Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides) {
   const YamlValue root = YamlValue::load_file(path);
   root.require_keys_within({"name", "robot", "servo", "seed", "physics", "motion", "parameters"});
+  const YamlValue robot_field = overrides.robot ? *overrides.robot : root.at("robot");
 
   StructureOptions structure;
   RolloutOptions rollout;
-  if (const auto physics = root.find("physics")) {
-    physics->require_keys_within({"dt_s", "solver", "quickstep_iterations", "gear_substeps",
-                                  "flex_sub_bodies", "universal_joints", "settle_s", "hold_torso"});
-    read_step_settings(*physics, rollout);
-    rollout.quickstep_iterations =
-        physics->get_int("quickstep_iterations", rollout.quickstep_iterations);
-    rollout.gear_substeps = physics->get_int("gear_substeps", rollout.gear_substeps);
-    if (rollout.gear_substeps < 1) physics->at("gear_substeps").fail("must be >= 1");
-    structure.flex_sub_bodies = physics->get_int("flex_sub_bodies", structure.flex_sub_bodies);
-    if (structure.flex_sub_bodies < 1 || structure.flex_sub_bodies > 16) {
-      physics->at("flex_sub_bodies").fail("must be between 1 and 16");
-    }
-    structure.universal_joints = physics->get_bool("universal_joints", true);
-    rollout.settle_s = physics->get_double("settle_s", 0.0);
-    rollout.hold_torso = physics->get_bool("hold_torso", false);
-    if (rollout.settle_s < 0.0) physics->at("settle_s").fail("must be >= 0");
-  }
+  if (const auto physics = root.find("physics")) read_physics(*physics, structure, rollout);
+  if (overrides.physics) read_physics(*overrides.physics, structure, rollout);
   if (overrides.solver) rollout.solver = *overrides.solver;
   if (overrides.flex_sub_bodies) structure.flex_sub_bodies = *overrides.flex_sub_bodies;
   if (overrides.gear_substeps) rollout.gear_substeps = *overrides.gear_substeps;
@@ -78,7 +104,6 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   if (seed < 0) root.at("seed").fail("must be >= 0");
   rollout.seed = static_cast<std::uint64_t>(seed);
 
-  const YamlValue robot_field = root.at("robot");
   const std::string robot_dir = robot_field.resolve_path(robot_field.as_string());
   if (!std::filesystem::exists(std::filesystem::path(robot_dir) / "robot.yaml")) {
     robot_field.fail("no robot.yaml in '" + robot_dir + "'");

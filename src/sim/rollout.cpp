@@ -13,13 +13,13 @@
 #include "motoflex/sim/joint_encoder.hpp"
 #include "motoflex/sim/ode_runtime.hpp"
 #include "ode_axis.hpp"
+#include "ode_quick_step.hpp"
 #include "resolved_parameters.hpp"
 #include "rollout_ode_access.hpp"
 
 namespace motoflex {
 namespace {
 
-constexpr int kMaxContactsPerFoot = 4;
 constexpr double kMaxLinearSpeed_m_s = 50.0;  // beyond this a legged robot has diverged
 constexpr double kMaxAngularSpeed_rad_s = 500.0;
 constexpr double kHeldTorsoClearance_m = 0.1;  // feet above the ground when the torso is held
@@ -105,7 +105,8 @@ struct Rollout::Impl {
   };
   std::vector<GeomRef> foot_geoms;
   std::vector<dJointFeedback> joint_feedback;    // per model joint (enable_joint_feedback)
-  std::vector<dJointFeedback> contact_feedback;  // kMaxContactsPerFoot per foot box
+  std::vector<dContactGeom> contact_points;      // dCollide's output, max_contacts_per_foot
+  std::vector<dJointFeedback> contact_feedback;  // max_contacts_per_foot per foot box
   std::vector<std::size_t> contact_owner;        // foot box of each used feedback slot
   std::size_t contacts_used = 0;
   std::vector<Eigen::Vector3d> foot_force_n;  // ground force on each foot box (world frame)
@@ -114,7 +115,8 @@ struct Rollout::Impl {
   std::vector<detail::OdeAxis> axes;                 // per actuator
   std::vector<double> joint_torque1, joint_torque2;  // per model joint, accumulated each step
   std::vector<std::size_t> flex_joints;              // model joint indices
-  double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs
+  double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs (implicit)
+  unsigned long quick_step_seed = 0;                 // this rollout's dRandInt state (quick)
   std::vector<std::unique_ptr<ServoLaw>> servos;     // per actuator
   std::vector<JointEncoder> encoders;
   std::vector<double> applied_torque_nm;
@@ -164,6 +166,7 @@ void Rollout::Impl::build_world() {
   dWorldSetERP(world, params.world_erp);
   dWorldSetCFM(world, params.world_cfm);
   dWorldSetQuickStepNumIterations(world, options.quickstep_iterations);
+  dWorldSetQuickStepW(world, options.quickstep_w);
   contact_group = dJointGroupCreate(0);
   ground = dCreatePlane(nullptr, 0.0, 0.0, 1.0, 0.0);
 
@@ -268,6 +271,16 @@ void Rollout::Impl::build_joints() {
       }
       continue;
     }
+    flex_joints.push_back(j);
+    if (options.flex_model == FlexModel::kExplicitCfm) {
+      // The 2011 program's flex rows (motoflex_2011.md §2.9): target 0 and FMax
+      // flexibleFriction, with the CFM the joint copied from the world when it was created
+      // (build_world sets it first), so each row is a damper 1/CFM capped at FMax; the spring
+      // is an explicit torque (apply_flex_springs).
+      dJointSetUniversalParam(joint, dParamFMax, params.flex.friction_nm);
+      dJointSetUniversalParam(joint, dParamFMax2, params.flex.friction_nm);
+      continue;
+    }
     // Flex joint: the spring −D_B·α and damping (seed 001 eq. 1) are integrated implicitly by
     // a motor row whose target velocity is −(ERP/h)·α with the matching CFM, i.e. ODE's
     // spring-damper equivalence ERP = h·k/(h·k + c), CFM = 1/(h·k + c). An explicit torque
@@ -282,7 +295,6 @@ void Rollout::Impl::build_joints() {
       dJointSetUniversalParam(joint, fmax, dInfinity);
       dJointSetUniversalParam(joint, cfm_param, cfm);
     }
-    flex_joints.push_back(j);
     if (params.flex.friction_nm > 0.0) {
       // Coulomb damping of the flex joint: a zero-velocity angular motor on both bending axes.
       dJointID motor = dJointCreateAMotor(world, nullptr);
@@ -429,6 +441,17 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
 }
 
 void Rollout::Impl::apply_flex_springs() {
+  if (options.flex_model == FlexModel::kExplicitCfm) {
+    // seed 001 eq. 1, T_B = −D_B·α, as an explicit torque (a positive universal torque turns
+    // ODE's angle positive, as for the actuators); stable only with the CFM damper of the rows.
+    const double spring = params.flex.spring_nm_per_rad;
+    for (const std::size_t j : flex_joints) {
+      dJointID joint = joints[j];
+      dJointAddUniversalTorques(joint, -spring * dJointGetUniversalAngle1(joint),
+                                -spring * dJointGetUniversalAngle2(joint));
+    }
+    return;
+  }
   for (const std::size_t j : flex_joints) {
     dJointID joint = joints[j];
     dJointSetUniversalParam(joint, dParamVel,
@@ -439,14 +462,15 @@ void Rollout::Impl::apply_flex_springs() {
 }
 
 void Rollout::Impl::collide_feet() {
-  dContactGeom contacts[kMaxContactsPerFoot];
   std::size_t used = 0;
+  const int max_contacts = static_cast<int>(contact_points.size());
   for (std::size_t f = 0; f < foot_geoms.size(); ++f) {
     const GeomRef& foot = foot_geoms[f];
-    const int n = dCollide(foot.geom, ground, kMaxContactsPerFoot, contacts, sizeof(dContactGeom));
+    const int n =
+        dCollide(foot.geom, ground, max_contacts, contact_points.data(), sizeof(dContactGeom));
     for (int k = 0; k < n; ++k) {
       dContact contact = contact_template;
-      contact.geom = contacts[k];
+      contact.geom = contact_points[k];
       dJointID joint = dJointCreateContact(world, contact_group, &contact);
       dJointAttach(joint, foot.body, nullptr);
       // The contact force is read back after the step (foot force sensor); the feedback
@@ -504,6 +528,7 @@ bool Rollout::Impl::diverged(std::string& detail) const {
 Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
                  const RolloutOptions& options, const std::vector<double>& initial_pose_rad) {
   if (!(options.dt_s > 0.0)) throw ModelError("physics dt_s must be positive");
+  if (options.max_contacts_per_foot < 1) throw ModelError("max_contacts_per_foot must be >= 1");
   if (initial_pose_rad.size() != model.actuators.size()) {
     throw ModelError("initial pose has the wrong number of joints");
   }
@@ -513,7 +538,9 @@ Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
   impl_->build_bodies();
   impl_->build_joints();
   impl_->build_actuators(parameters);
-  impl_->contact_feedback.resize(impl_->foot_geoms.size() * kMaxContactsPerFoot);
+  const auto max_contacts = static_cast<std::size_t>(options.max_contacts_per_foot);
+  impl_->contact_points.resize(max_contacts);
+  impl_->contact_feedback.resize(impl_->foot_geoms.size() * max_contacts);
   impl_->contact_owner.resize(impl_->contact_feedback.size());
   impl_->foot_force_n.assign(impl_->foot_geoms.size(), Eigen::Vector3d::Zero());
   impl_->place(initial_pose_rad);
@@ -532,8 +559,9 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
     s.apply_servos(command_now_rad, command_next_rad);
     s.apply_flex_springs();
     s.collide_feet();
-    const int ok = s.options.solver == StepSolver::kStep ? dWorldStep(s.world, s.options.dt_s)
-                                                         : dWorldQuickStep(s.world, s.options.dt_s);
+    const int ok = s.options.solver == StepSolver::kStep
+                       ? dWorldStep(s.world, s.options.dt_s)
+                       : detail::seeded_quick_step(s.world, s.options.dt_s, s.quick_step_seed);
     s.read_foot_forces();
     dJointGroupEmpty(s.contact_group);
     if (!ok) throw ModelError("ODE ran out of memory in the step");
