@@ -57,8 +57,8 @@ double four_bar_knee_angle(const Eigen::Vector3d& p) {
     const Eigen::Vector3d shank_down = (leg.ankle_m - leg.knee_m).normalized();
     return (leg.knee_m + kCrank_m * shank_down - crank_tip).norm() - coupler_m;
   };
-  // Start where the shank hangs vertically (q3 = −q2), then follow the crank by Newton.
-  double q3 = -p.y() + p.z();
+  // Start where the shank hangs vertically (q3 = −q2) and let Newton find the closure.
+  double q3 = -p.y();
   for (int k = 0; k < 50; ++k) {
     constexpr double h = 1e-7;
     const double f = residual(q3);
