@@ -46,6 +46,21 @@ const std::string& actuator_servo_name(const RobotModel& model, const std::strin
   return own.empty() ? model.default_servo : own;
 }
 
+std::vector<std::string> add_servo_law_defaults(RobotModel& model,
+                                                const std::string& override_servo) {
+  std::vector<std::string> added;
+  for (std::size_t a = 0; a < model.actuators.size(); ++a) {
+    const ServoLawInfo& law = servo_law(actuator_servo_name(model, override_servo, a));
+    if (law.default_parameters == nullptr) continue;
+    for (ParameterSpec& spec : law.default_parameters(model, a)) {
+      if (model.parameters.contains(spec.name)) continue;
+      added.push_back(spec.name);
+      model.parameters.add(std::move(spec));
+    }
+  }
+  return added;
+}
+
 double ParameterReader::operator()(const std::string& name) const {
   const auto index = values_.registry().find(name);
   if (!index) {

@@ -95,6 +95,11 @@ struct ServoLawInfo {
   // The pendulum bench: the first actuated joint's child is replaced by a point mass
   // (bench.mass_kg at bench.length_m along the arm, inertia bench.armature_kg_m2).
   bool point_mass_arm = false;
+  // Default value and search bounds of the law's own parameters for one actuator (the
+  // `servo.<scope>.*` names; joint.* names have theirs in the model's parameter catalog), for
+  // robots that do not declare them. nullptr = the law has no defaults: the robot declares all.
+  std::vector<ParameterSpec> (*default_parameters)(const RobotModel& model,
+                                                   std::size_t actuator) = nullptr;
 };
 
 // Every law, in registration order.
@@ -110,5 +115,11 @@ std::string servo_law_names();
 // default (robot.yaml `servo:`).
 const std::string& actuator_servo_name(const RobotModel& model, const std::string& override_servo,
                                        std::size_t actuator);
+// Adds to `model` the default of every parameter that the law of each actuator (as
+// actuator_servo_name resolves it with `override_servo`) lists in default_parameters and the
+// model does not declare. Returns the names added. Throws std::invalid_argument for an unknown
+// law. (For robots built in code and for tests; robot.yaml files declare their parameters.)
+std::vector<std::string> add_servo_law_defaults(RobotModel& model,
+                                                const std::string& override_servo = "");
 
 }  // namespace motoflex
