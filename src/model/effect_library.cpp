@@ -106,6 +106,39 @@ std::vector<Effect> build_library() {
                      {global("contact.slip", 0.2, true), global("contact.mu", 0.0)},
                      true,
                      0});
+  // Appended after the effects above, so that their order (and the loop's ties) stays.
+  // BAM's directional and quadratic friction (M4–M6, bam.md §2d) on the laws that read the whole
+  // family (pd_torque, dynamixel, feetech; friction_family.hpp). The coefficients above are M1–M3.
+  effects.push_back({"directional_load_friction",
+                     "friction growing with the external (gravity) torque apart from the motor's "
+                     "(BAM's M5)",
+                     "a step with the sign of the joint velocity, scaled by the gravity load",
+                     {per_joint("load_friction_external", 0.05)},
+                     false,
+                     0});
+  effects.push_back({"load_stribeck_friction",
+                     "load-dependent stiction: breakaway friction growing with the load (BAM's "
+                     "M4/M5)",
+                     "large at reversals and standstill under load, vanishing at speed",
+                     {per_joint("load_friction_stribeck", 0.05),
+                      per_joint("load_friction_external_stribeck", 0.05)},
+                     false,
+                     0});
+  effects.push_back({"quadratic_load_friction",
+                     "stiction growing with the square of the load when motor and gravity oppose "
+                     "(BAM's M6)",
+                     "at low speed while the motor holds or lowers a load",
+                     {per_joint("load_friction_quad_per_nm", 0.05),
+                      per_joint("load_friction_external_quad_per_nm", 0.05)},
+                     false,
+                     0});
+  effects.push_back({"armature",
+                     "rotor inertia reflected through the gear (armature) on each joint",
+                     "proportional to the joint acceleration: lag and overshoot growing with the "
+                     "command's frequency",
+                     {per_joint("armature_kg_m2", 0.05)},
+                     false,
+                     0});
   return effects;
 }
 

@@ -77,6 +77,21 @@ std::vector<const ServoLawInfo*> laws_for(const RobotModel& model, const Rollout
   return laws;
 }
 
+// The bodies joint `joint` moves: its child and everything below it.
+std::vector<int> moved_bodies(const RobotModel& model, int joint) {
+  std::vector<int> moved;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    for (int j = model.bodies[b].parent_joint; j >= 0;
+         j = model.bodies[model.joints[j].parent_body].parent_joint) {
+      if (j == joint) {
+        moved.push_back(static_cast<int>(b));
+        break;
+      }
+    }
+  }
+  return moved;
+}
+
 // The pendulum bench: the first actuator's law may carry the arm as a point mass.
 bool first_law_has_point_mass_arm(const std::vector<const ServoLawInfo*>& laws) {
   return !laws.empty() && laws.front()->point_mass_arm;
@@ -116,6 +131,16 @@ struct Rollout::Impl {
   std::vector<std::size_t> flex_joints;              // model joint indices
   double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs
   std::vector<std::unique_ptr<ServoLaw>> servos;     // per actuator
+  // Extra rows of an actuated axis that its law asks for (null = none): the armature's inertia
+  // row and a separate friction row, each an angular motor between the joint's two bodies.
+  struct AxisRows {
+    dJointID inertia = nullptr;
+    dJointID friction = nullptr;
+    std::vector<dBodyID> load_bodies;  // what the joint moves, when the law needs τ_e
+    bool external_torque = false;
+  };
+  std::vector<AxisRows> axis_rows;  // per actuator
+  Eigen::Vector3d gravity_m_s2 = Eigen::Vector3d(0.0, 0.0, -9.81);
   std::vector<JointEncoder> encoders;
   std::vector<double> applied_torque_nm;
   dContact contact_template{};
@@ -141,7 +166,11 @@ struct Rollout::Impl {
   void build_bodies();
   void build_joints();
   void build_actuators(const ParameterSet& values);
+  dJointID add_axis_motor(std::size_t actuator);
   void add_damping_row(std::size_t actuator, double damping_nm_s_per_rad);
+  void add_inertia_row(std::size_t actuator, double armature_kg_m2);
+  void update_inertia_rows();
+  double external_torque_nm(std::size_t actuator) const;
   void place(const std::vector<double>& pose_rad);
   void apply_servos(const double* now_rad, const double* next_rad);
   void apply_flex_springs();
@@ -159,7 +188,7 @@ void Rollout::Impl::build_world() {
   threading = dThreadingAllocateSelfThreadedImplementation();
   dWorldSetStepThreadingImplementation(world, dThreadingImplementationGetFunctions(threading),
                                        threading);
-  dWorldSetGravity(world, 0.0, 0.0, -9.81);
+  dWorldSetGravity(world, gravity_m_s2.x(), gravity_m_s2.y(), gravity_m_s2.z());
   // Set before joints are created: joints copy ERP/CFM into their limit and motor rows.
   dWorldSetERP(world, params.world_erp);
   dWorldSetCFM(world, params.world_cfm);
@@ -305,6 +334,7 @@ void Rollout::Impl::build_joints() {
 void Rollout::Impl::build_actuators(const ParameterSet& values) {
   const std::size_t n = model.actuators.size();
   applied_torque_nm.assign(n, 0.0);
+  axis_rows.assign(n, AxisRows{});
   for (std::size_t i = 0; i < n; ++i) {
     const ActuatorSpec& spec = model.actuators[i];
     detail::OdeAxis axis;
@@ -317,16 +347,28 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
                           RandomStream({options.seed, kEncoderNoisePurpose, i}));
     const ParameterReader reader(values, laws[i]->name);
     servos.push_back(laws[i]->create({model, i, reader, options.dt_s, options.gear_substeps}));
-    const double damping_nm_s_per_rad = servos.back()->damping_row_nm_s_per_rad();
+    const ServoLaw& servo = *servos.back();
+    const double damping_nm_s_per_rad = servo.damping_row_nm_s_per_rad();
     if (damping_nm_s_per_rad > 0.0) add_damping_row(i, damping_nm_s_per_rad);
+    const double armature_kg_m2 = servo.armature_kg_m2();
+    if (armature_kg_m2 > 0.0) add_inertia_row(i, armature_kg_m2);
+    if (servo.has_friction_row()) {
+      axis_rows[i].friction = add_axis_motor(i);
+      dJointSetAMotorParam(axis_rows[i].friction, dParamVel, 0.0);
+      dJointSetAMotorParam(axis_rows[i].friction, dParamFMax, 0.0);
+    }
+    if (servo.needs_external_torque()) {
+      axis_rows[i].external_torque = true;
+      for (const int b : moved_bodies(model, spec.joint)) {
+        if (bodies[b] != nullptr) axis_rows[i].load_bodies.push_back(bodies[b]);
+      }
+    }
   }
 }
 
-void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_per_rad) {
-  // A linear damper τ = −c·ω integrated implicitly: an angular motor row driving the relative
-  // rate about the actuated axis to zero with unbounded force and CFM = 1/c gives the row force
-  // −c·ω at the end of the step (ODE's spring-damper equivalence with k = 0). It stays stable
-  // for any c·h/I, where an explicit torque diverges once c·h/I > 2.
+dJointID Rollout::Impl::add_axis_motor(std::size_t actuator) {
+  // An angular motor about the actuated axis between the joint's two bodies: its row acts on
+  // the relative rate (ω_carrier − ω_other)·axis, which is ± the joint rate.
   const ActuatorSpec& spec = model.actuators[actuator];
   const JointSpec& joint = model.joints[spec.joint];
   dBodyID parent = bodies[joint.parent_body];
@@ -349,9 +391,78 @@ void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_pe
   dJointSetAMotorMode(motor, dAMotorUser);
   dJointSetAMotorNumAxes(motor, 1);
   dJointSetAMotorAxis(motor, 0, frame, axis.x(), axis.y(), axis.z());
+  return motor;
+}
+
+void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_per_rad) {
+  // A linear damper τ = −c·ω integrated implicitly: an angular motor row driving the relative
+  // rate about the actuated axis to zero with unbounded force and CFM = 1/c gives the row force
+  // −c·ω at the end of the step (ODE's spring-damper equivalence with k = 0). It stays stable
+  // for any c·h/I, where an explicit torque diverges once c·h/I > 2.
+  dJointID motor = add_axis_motor(actuator);
   dJointSetAMotorParam(motor, dParamVel, 0.0);
   dJointSetAMotorParam(motor, dParamFMax, dInfinity);
   dJointSetAMotorParam(motor, dParamCFM, 1.0 / damping_nm_s_per_rad);
+}
+
+void Rollout::Impl::add_inertia_row(std::size_t actuator, double armature_kg_m2) {
+  // The armature J as joint-space inertia (MuJoCo's armature: J·q̈ on the joint's own equation,
+  // no coupling to the other joints). ODE solves a motor row to J·v₁ = v_target − CFM·λ, so a row
+  // that targets the rate at the start of the step, with unbounded force and CFM = h/J, applies
+  // λ = −J·(v₁ − v₀)/h: the rotor's inertial reaction, implicitly, whatever J·h/I. The joint's
+  // equation becomes (I + J)·(v₁ − v₀)/h = τ, exactly as if J were added to the inertia it
+  // moves (tests/sim/armature_test.cpp). A rotor body coupled 1:1 by a transmission joint would
+  // add an extra body, a constraint, and the coupling J·ω_parent·q̇ that a real rotor spinning at
+  // σ·q̇ has only σ times weaker.
+  axis_rows[actuator].inertia = add_axis_motor(actuator);
+  dJointID motor = axis_rows[actuator].inertia;
+  dJointSetAMotorParam(motor, dParamVel, 0.0);
+  dJointSetAMotorParam(motor, dParamFMax, dInfinity);
+  dJointSetAMotorParam(motor, dParamCFM, options.dt_s / armature_kg_m2);
+}
+
+void Rollout::Impl::update_inertia_rows() {
+  for (const AxisRows& rows : axis_rows) {
+    if (rows.inertia == nullptr) continue;
+    dVector3 axis;
+    dJointGetAMotorAxis(rows.inertia, 0, axis);
+    double rate = 0.0;
+    for (int k = 0; k < 2; ++k) {
+      const dBodyID body = dJointGetBody(rows.inertia, k);
+      if (body == nullptr) continue;
+      const dReal* w = dBodyGetAngularVel(body);
+      rate += (k == 0 ? 1.0 : -1.0) * (axis[0] * w[0] + axis[1] * w[1] + axis[2] * w[2]);
+    }
+    dJointSetAMotorParam(rows.inertia, dParamVel, rate);
+  }
+}
+
+double Rollout::Impl::external_torque_nm(std::size_t actuator) const {
+  // τ_e = axis · Σ (p_b − anchor) × m_b·g over the bodies the joint moves. The axis vectors are
+  // the physical axes of both joint kinds, so a positive torque turns the child positively.
+  const AxisRows& rows = axis_rows[actuator];
+  const detail::OdeAxis& ode = axes[actuator];
+  dVector3 anchor, axis;
+  if (!ode.universal) {
+    dJointGetHingeAnchor(ode.joint, anchor);
+    dJointGetHingeAxis(ode.joint, axis);
+  } else {
+    dJointGetUniversalAnchor(ode.joint, anchor);
+    if (ode.axis == 1) {
+      dJointGetUniversalAxis1(ode.joint, axis);
+    } else {
+      dJointGetUniversalAxis2(ode.joint, axis);
+    }
+  }
+  const Eigen::Vector3d a(anchor[0], anchor[1], anchor[2]);
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+  for (const dBodyID body : rows.load_bodies) {
+    const dReal* p = dBodyGetPosition(body);
+    dMass mass;
+    dBodyGetMass(body, &mass);
+    moment += (Eigen::Vector3d(p[0], p[1], p[2]) - a).cross(mass.mass * gravity_m_s2);
+  }
+  return moment.dot(Eigen::Vector3d(axis[0], axis[1], axis[2]));
 }
 
 void Rollout::Impl::place(const std::vector<double>& pose_rad) {
@@ -410,8 +521,12 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
     input.next_command_rad = next_rad[i];
     input.angle_rad = axis.angle_rad();
     input.rate_rad_s = axis.rate_rad_s();
+    input.external_torque_nm = axis_rows[i].external_torque ? external_torque_nm(i) : 0.0;
     const ServoOutput out = servos[i]->step(input);
     axis.set_motor(out.row.velocity_rad_s, out.row.fmax_nm);
+    if (axis_rows[i].friction != nullptr) {
+      dJointSetAMotorParam(axis_rows[i].friction, dParamFMax, out.friction_row.fmax_nm);
+    }
     applied_torque_nm[i] = out.torque_nm;
     if (std::isfinite(out.torque_nm)) {
       const ActuatorSpec& spec = model.actuators[i];
@@ -530,6 +645,7 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
   Impl& s = *impl_;
   try {
     s.apply_servos(command_now_rad, command_next_rad);
+    s.update_inertia_rows();
     s.apply_flex_springs();
     s.collide_feet();
     const int ok = s.options.solver == StepSolver::kStep ? dWorldStep(s.world, s.options.dt_s)

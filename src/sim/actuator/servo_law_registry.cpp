@@ -10,13 +10,15 @@ ServoLawInfo motoflex_servo_law_info();
 ServoLawInfo velocity_servo_law_info();
 ServoLawInfo ideal_servo_law_info();
 ServoLawInfo bench_servo_law_info();
+ServoLawInfo pd_torque_servo_law_info();
+ServoLawInfo dynamixel_servo_law_info();
+ServoLawInfo feetech_servo_law_info();
 
 const std::vector<ServoLawInfo>& servo_laws() {
   static const std::vector<ServoLawInfo> laws = {
-      motoflex_servo_law_info(),
-      velocity_servo_law_info(),
-      ideal_servo_law_info(),
-      bench_servo_law_info(),
+      motoflex_servo_law_info(), velocity_servo_law_info(),  ideal_servo_law_info(),
+      bench_servo_law_info(),    pd_torque_servo_law_info(), dynamixel_servo_law_info(),
+      feetech_servo_law_info(),
   };
   return laws;
 }
