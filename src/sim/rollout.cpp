@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 
+#include "axis_rows.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/model/body_kinematics.hpp"
 #include "motoflex/sim/actuator/servo_law.hpp"
@@ -75,21 +76,6 @@ std::vector<const ServoLawInfo*> laws_for(const RobotModel& model, const Rollout
     laws.push_back(law);
   }
   return laws;
-}
-
-// The bodies joint `joint` moves: its child and everything below it.
-std::vector<int> moved_bodies(const RobotModel& model, int joint) {
-  std::vector<int> moved;
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    for (int j = model.bodies[b].parent_joint; j >= 0;
-         j = model.bodies[model.joints[j].parent_body].parent_joint) {
-      if (j == joint) {
-        moved.push_back(static_cast<int>(b));
-        break;
-      }
-    }
-  }
-  return moved;
 }
 
 // The pendulum bench: the first actuator's law may carry the arm as a point mass.
@@ -359,7 +345,7 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
     }
     if (servo.needs_external_torque()) {
       axis_rows[i].external_torque = true;
-      for (const int b : moved_bodies(model, spec.joint)) {
+      for (const int b : detail::moved_bodies(model, spec.joint)) {
         if (bodies[b] != nullptr) axis_rows[i].load_bodies.push_back(bodies[b]);
       }
     }
@@ -367,31 +353,7 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
 }
 
 dJointID Rollout::Impl::add_axis_motor(std::size_t actuator) {
-  // An angular motor about the actuated axis between the joint's two bodies: its row acts on
-  // the relative rate (ω_carrier − ω_other)·axis, which is ± the joint rate.
-  const ActuatorSpec& spec = model.actuators[actuator];
-  const JointSpec& joint = model.joints[spec.joint];
-  dBodyID parent = bodies[joint.parent_body];
-  dBodyID child = bodies[joint.child_body];
-  const Eigen::Vector3d& axis = spec.axis == 1 ? joint.axis1_W0 : joint.axis2_W0;
-  // The axis rides on the body that carries it: a hinge axis is fixed in both bodies, a
-  // universal joint's axis 1 in the parent and axis 2 in the child; a static body is the world.
-  dBodyID carrier =
-      (joint.kind == JointKind::kUniversal || joint.kind == JointKind::kFlex) && spec.axis == 2
-          ? child
-          : parent;
-  dBodyID other = carrier == parent ? child : parent;
-  int frame = 1;  // axis given relative to body1 = carrier
-  if (carrier == nullptr) {
-    std::swap(carrier, other);
-    frame = 0;  // the carrier is the static world: the axis is fixed in the global frame
-  }
-  dJointID motor = dJointCreateAMotor(world, nullptr);
-  dJointAttach(motor, carrier, other);
-  dJointSetAMotorMode(motor, dAMotorUser);
-  dJointSetAMotorNumAxes(motor, 1);
-  dJointSetAMotorAxis(motor, 0, frame, axis.x(), axis.y(), axis.z());
-  return motor;
+  return detail::create_axis_motor(world, model, bodies, actuator);
 }
 
 void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_per_rad) {
@@ -411,9 +373,10 @@ void Rollout::Impl::add_inertia_row(std::size_t actuator, double armature_kg_m2)
   // that targets the rate at the start of the step, with unbounded force and CFM = h/J, applies
   // λ = −J·(v₁ − v₀)/h: the rotor's inertial reaction, implicitly, whatever J·h/I. The joint's
   // equation becomes (I + J)·(v₁ − v₀)/h = τ, exactly as if J were added to the inertia it
-  // moves (tests/sim/armature_test.cpp). A rotor body coupled 1:1 by a transmission joint would
-  // add an extra body, a constraint, and the coupling J·ω_parent·q̇ that a real rotor spinning at
-  // σ·q̇ has only σ times weaker.
+  // moves (tests/sim/armature_test.cpp). The alternative, a rotor body on the parent coupled 1:1
+  // to the child by a transmission joint, costs a body and a constraint per joint and couples
+  // the joint to the parent's rotation with the whole J, where a real rotor (J/N² spinning at
+  // N·q̇) couples with J/N only; MuJoCo's armature, which the MJCF export writes, has neither.
   axis_rows[actuator].inertia = add_axis_motor(actuator);
   dJointID motor = axis_rows[actuator].inertia;
   dJointSetAMotorParam(motor, dParamVel, 0.0);
@@ -423,46 +386,12 @@ void Rollout::Impl::add_inertia_row(std::size_t actuator, double armature_kg_m2)
 
 void Rollout::Impl::update_inertia_rows() {
   for (const AxisRows& rows : axis_rows) {
-    if (rows.inertia == nullptr) continue;
-    dVector3 axis;
-    dJointGetAMotorAxis(rows.inertia, 0, axis);
-    double rate = 0.0;
-    for (int k = 0; k < 2; ++k) {
-      const dBodyID body = dJointGetBody(rows.inertia, k);
-      if (body == nullptr) continue;
-      const dReal* w = dBodyGetAngularVel(body);
-      rate += (k == 0 ? 1.0 : -1.0) * (axis[0] * w[0] + axis[1] * w[1] + axis[2] * w[2]);
-    }
-    dJointSetAMotorParam(rows.inertia, dParamVel, rate);
+    if (rows.inertia != nullptr) detail::target_current_rate(rows.inertia);
   }
 }
 
 double Rollout::Impl::external_torque_nm(std::size_t actuator) const {
-  // τ_e = axis · Σ (p_b − anchor) × m_b·g over the bodies the joint moves. The axis vectors are
-  // the physical axes of both joint kinds, so a positive torque turns the child positively.
-  const AxisRows& rows = axis_rows[actuator];
-  const detail::OdeAxis& ode = axes[actuator];
-  dVector3 anchor, axis;
-  if (!ode.universal) {
-    dJointGetHingeAnchor(ode.joint, anchor);
-    dJointGetHingeAxis(ode.joint, axis);
-  } else {
-    dJointGetUniversalAnchor(ode.joint, anchor);
-    if (ode.axis == 1) {
-      dJointGetUniversalAxis1(ode.joint, axis);
-    } else {
-      dJointGetUniversalAxis2(ode.joint, axis);
-    }
-  }
-  const Eigen::Vector3d a(anchor[0], anchor[1], anchor[2]);
-  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
-  for (const dBodyID body : rows.load_bodies) {
-    const dReal* p = dBodyGetPosition(body);
-    dMass mass;
-    dBodyGetMass(body, &mass);
-    moment += (Eigen::Vector3d(p[0], p[1], p[2]) - a).cross(mass.mass * gravity_m_s2);
-  }
-  return moment.dot(Eigen::Vector3d(axis[0], axis[1], axis[2]));
+  return detail::gravity_torque_nm(axes[actuator], axis_rows[actuator].load_bodies, gravity_m_s2);
 }
 
 void Rollout::Impl::place(const std::vector<double>& pose_rad) {

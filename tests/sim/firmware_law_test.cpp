@@ -75,8 +75,8 @@ TEST(FirmwareLawTest, SaturatedDutyStallTorqueAndBackEmfSpeed) {
           "max |ω − closed form| %.2e rad/s\n",
           law, motor.ratio, stall_nm, no_load_rad_s, tau_s, worst);
       // The back-EMF is explicit (from the step's start rate): first order in h/τ; measured
-      // 2.8e-4 rad/s against ω(0.5 s) = 2.2 rad/s.
-      EXPECT_LT(worst, 1e-3) << law;
+      // 9.9e-4 rad/s against ω(0.5 s) = 3.2 rad/s.
+      EXPECT_LT(worst, 3e-3) << law;
     }
   }
 }

@@ -60,7 +60,7 @@ TEST(PdTorqueLawTest, StepResponseIsTheClosedFormSecondOrderSystem) {
   std::printf("[ pd_torque ] step 0.5 rad, ωn 20 rad/s, ζ 0.1: max |q − closed form| %.2e rad\n",
               worst);
   // Explicit PD torque from the step's start state with symplectic Euler: a phase error of order
-  // ωn·h per cycle; measured 5.4e-3 rad over 2 s (6 cycles of a 0.5 rad step).
+  // ωn·h per cycle; measured 4.9e-3 rad over 2 s (6 cycles of a 0.5 rad step).
   EXPECT_LT(worst, 1.5e-2);
 }
 
@@ -84,7 +84,7 @@ TEST(PdTorqueLawTest, SaturatedDriveAndTorqueSpeedCurve) {
     worst = std::max(worst, std::abs(trace.w_rad_s[k] - analytic));
   }
   std::printf("[ pd_torque ] torque-speed curve: max |ω − closed form| %.2e rad/s (ω₀ 5)\n", worst);
-  // Forward difference of a 0.5 s time constant at 1 ms: ≤ ω₀·h/(2τ) = 5e-3; measured 3.7e-3.
+  // Forward difference of a 0.5 s time constant at 1 ms: ≤ ω₀·h/(2τ) = 5e-3; measured 1.8e-3.
   EXPECT_LT(worst, 6e-3);
 }
 
@@ -104,7 +104,7 @@ TEST(PdTorqueLawTest, CoulombAndViscousFrictionSlowTheSaturatedDrive) {
     worst = std::max(worst, std::abs(trace.w_rad_s[k] - analytic));
   }
   std::printf("[ pd_torque ] Coulomb + viscous drive: max |ω − closed form| %.2e rad/s\n", worst);
-  EXPECT_LT(worst, 3e-3);  // measured 7.2e-4 (first-order in h)
+  EXPECT_LT(worst, 3e-3);  // measured 1.1e-3 (first-order in h)
   // The friction costs (F + K_v·ω)/I of acceleration: 1.7 of 5.0 rad/s at 0.5 s.
   EXPECT_LT(trace.w_rad_s.back(), 0.5 * torque_max / inertia - 1.5);
 }
