@@ -49,7 +49,8 @@ std::vector<ActuatorExport> export_actuators(const ExportInput& input) {
     ActuatorExport& a = out[i];
     a.joint = spec.name;
     a.group = spec.group;
-    a.limited = std::isfinite(spec.lower_rad) && std::isfinite(spec.upper_rad);
+    // A robot without joint stops (robot.yaml joint_stops: false) exports none either.
+    a.limited = model.joint_stops && std::isfinite(spec.lower_rad) && std::isfinite(spec.upper_rad);
     a.lower_rad = a.limited ? spec.lower_rad : 0.0;
     a.upper_rad = a.limited ? spec.upper_rad : 0.0;
     rule.fill(input, i, get, a);

@@ -37,6 +37,7 @@ struct RobotYaml {
   std::string root_link;
   std::string torso_link;
   bool fixed_base = false;
+  bool joint_stops = true;
   std::string servo;
   int servo_line = 0;
   struct Actuated {
@@ -57,14 +58,16 @@ struct RobotYaml {
 
 RobotYaml read_robot_yaml(const YamlValue& root) {
   root.require_keys_within({"name", "urdf", "root_link", "fixed_base", "torso_link", "servo",
-                            "actuated_joints", "held_joints", "universal_joints", "flexible_links",
-                            "feet", "fall", "initial_clearance_m", "stand_pose", "parameters"});
+                            "joint_stops", "actuated_joints", "held_joints", "universal_joints",
+                            "flexible_links", "feet", "fall", "initial_clearance_m", "stand_pose",
+                            "parameters"});
   RobotYaml out;
   out.name = root.at("name").as_string();
   out.urdf_path = root.resolve_path(root.at("urdf").as_string());
   out.root_link = root.at("root_link").as_string();
   out.torso_link = root.get_string("torso_link", out.root_link);
   out.fixed_base = root.get_bool("fixed_base", false);
+  out.joint_stops = root.get_bool("joint_stops", true);
   const YamlValue servo = root.at("servo");
   out.servo = servo.as_string();
   out.servo_line = servo.line();
@@ -210,6 +213,7 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
   model.source.servo_line = spec.servo_line;
   model.structure = structure;
   model.fixed_base = spec.fixed_base;
+  model.joint_stops = spec.joint_stops;
   model.max_tilt_rad = spec.max_tilt_rad;
   model.min_torso_height_m = spec.min_torso_height_m;
   model.initial_clearance_m = spec.initial_clearance_m;
@@ -291,7 +295,9 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
       const Eigen::Isometry3d X_WJ = X_WL[tj.parent_link] * tj.X_PJ;
       joint.anchor_W0_m = X_WJ.translation();
       joint.axis1_W0 = (X_WJ.linear() * tj.axis_J).normalized();
-      if (tj.limited) {
+      // Without joint stops the URDF limits stay on the actuators (planners, exporters) but
+      // never become ODE stops.
+      if (tj.limited && spec.joint_stops) {
         joint.lower1_rad = tj.lower_rad;
         joint.upper1_rad = tj.upper_rad;
       }
@@ -306,7 +312,7 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
         joint.child_body = body_of_group.at(groups.find(second.child_link));
         const Eigen::Isometry3d X_WJ2 = X_WL[second.parent_link] * second.X_PJ;
         joint.axis2_W0 = (X_WJ2.linear() * second.axis_J).normalized();
-        if (second.limited) {
+        if (second.limited && spec.joint_stops) {
           joint.lower2_rad = second.lower_rad;
           joint.upper2_rad = second.upper_rad;
         }

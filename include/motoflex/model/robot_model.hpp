@@ -52,6 +52,7 @@ struct JointSpec {
   Eigen::Vector3d anchor_W0_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d axis1_W0 = Eigen::Vector3d::UnitY();  // unit, world frame at build config
   Eigen::Vector3d axis2_W0 = Eigen::Vector3d::UnitX();  // second axis (universal, flex)
+  // ODE stops; infinite when the URDF joint is unlimited or the robot has no joint stops.
   double lower1_rad = -std::numeric_limits<double>::infinity();
   double upper1_rad = std::numeric_limits<double>::infinity();
   double lower2_rad = -std::numeric_limits<double>::infinity();
@@ -87,6 +88,9 @@ struct RobotModel {
   std::vector<JointSpec> joints;        // topological order: a parent body precedes its children
   std::vector<ActuatorSpec> actuators;  // log column order
   bool fixed_base = false;
+  // robot.yaml `joint_stops` (default true): false leaves the URDF limits out of the joints: no
+  // ODE stops, no limits in SDF/MJCF exports; ActuatorSpec keeps them for motion planners.
+  bool joint_stops = true;
   int root_body = 0;
   int torso_body = 0;
   Eigen::Matrix3d R_torsoBody_torsoLink = Eigen::Matrix3d::Identity();
