@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/export/exporter.hpp"
 #include "motoflex/export/mujoco_check.hpp"
@@ -63,7 +64,7 @@ nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
           {"motoflex_end", c.motoflex_end}};
 }
 
-int run(const ExportArgs& args) {
+const Exporter& check_arguments(const ExportArgs& args) {
   const Exporter* exporter = find_exporter(args.format);
   if (exporter == nullptr) {
     throw InputError("", 0, "--format", "expected one of " + exporter_formats());
@@ -71,12 +72,32 @@ int run(const ExportArgs& args) {
   if (!args.check_log.empty() && args.format != "mjcf") {
     throw InputError("", 0, "--check-mujoco", "needs --format mjcf");
   }
-  if (!(args.dt_s > 0.0 && args.dt_s <= 0.01))
+  if (!(args.dt_s > 0.0 && args.dt_s <= 0.01)) {
     throw InputError("", 0, "--dt", "must be in (0, 0.01] s");
-  if (args.settle_s < 0.0) throw InputError("", 0, "--settle", "must be >= 0");
+  }
+  if (!(args.settle_s >= 0.0)) throw InputError("", 0, "--settle", "must be >= 0");
+  if (!(args.duration_s >= 0.0)) throw InputError("", 0, "--duration", "must be >= 0");
   if (!std::filesystem::exists(std::filesystem::path(args.robot) / "robot.yaml")) {
     throw InputError(args.robot, 0, "--robot", "no robot.yaml in this folder");
   }
+  return *exporter;
+}
+
+// Writes the file (atomically) and returns what its parser complained about ("" = accepted).
+std::string write_checked_file(const Exporter& exporter, const ExportInput& input,
+                               const ExportArgs& args) {
+  ExportOptions options;
+  options.armature = !args.no_armature;
+  const std::string text = exporter.write(input, options);
+  const std::string complaint = exporter.read_back_errors(text);
+  const std::filesystem::path out_dir = std::filesystem::path(args.out).parent_path();
+  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
+  write_file_atomically(args.out, text);
+  return complaint;
+}
+
+int run(const ExportArgs& args) {
+  const Exporter& exporter = check_arguments(args);
   StructureOptions structure;
   structure.flex_sub_bodies = args.flex_sub_bodies;
   const RobotModel model = load_robot(args.robot, structure);
@@ -97,27 +118,16 @@ int run(const ExportArgs& args) {
         read_commands(model, args.check_log, args.duration_s, input.parameters, log_parameters);
   }
 
-  std::string text;
   std::string parser_complaint;
   try {
-    ExportOptions options;
-    options.armature = !args.no_armature;
-    text = exporter->write(input, options);
-    parser_complaint = exporter->read_back_errors(text);
+    parser_complaint = write_checked_file(exporter, input, args);
   } catch (const ModelError& error) {
     std::fprintf(stderr, "motoflex: cannot export: %s\n", error.what());
     return 1;
   }
-  const std::filesystem::path out_dir = std::filesystem::path(args.out).parent_path();
-  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
-  {
-    std::ofstream out(args.out, std::ios::binary);
-    out << text;
-    if (!out) throw InputError(args.out, 0, "--out", "cannot write the file");
-  }
   if (!parser_complaint.empty()) {
     std::fprintf(stderr, "motoflex: %s rejects the %s export %s: %s\n",
-                 exporter->reader_name().c_str(), args.format.c_str(), args.out.c_str(),
+                 exporter.reader_name().c_str(), args.format.c_str(), args.out.c_str(),
                  parser_complaint.c_str());
     return 1;
   }
@@ -128,7 +138,7 @@ int run(const ExportArgs& args) {
   summary["robot"] = model.name;
   summary["servo"] = servo;
   summary["parameters"] = args.parameters;
-  summary["read_back_by"] = exporter->reader_name();
+  summary["read_back_by"] = exporter.reader_name();
   if (!log_parameters.empty()) summary["log_parameters"] = log_parameters;
   if (!args.check_log.empty()) {
     MujocoCheckOptions options;

@@ -55,7 +55,9 @@ std::vector<ActuatorExport> export_actuators(const ExportInput& input) {
     a.upper_rad = a.limited ? spec.upper_rad : 0.0;
     rule.fill(input, i, get, a);
     a.command_is_next_angle = rule.command_is_next_angle;
-    a.velocity_rad_s = no_load_speed(a.effort_nm, a.damping_nm_s_per_rad);
+    // A rule that knows its law's speed limit sets it (pd_torque's torque-speed curve).
+    if (a.velocity_rad_s == 0.0)
+      a.velocity_rad_s = no_load_speed(a.effort_nm, a.damping_nm_s_per_rad);
   }
   return out;
 }

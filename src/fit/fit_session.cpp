@@ -121,6 +121,116 @@ const FitConfig& FitSession::config() const {
   return state_->config;
 }
 
+namespace {
+
+std::unique_ptr<motoflex_es::Evaluator> default_evaluator(const FitConfig& config) {
+  if (config.threads > 1) return std::make_unique<motoflex_es::OpenMpEvaluator>(config.threads);
+  return std::make_unique<motoflex_es::SerialEvaluator>();
+}
+
+// Seconds of the run so far: earlier sessions plus this one.
+class RunClock {
+ public:
+  explicit RunClock(double seconds_before) : before_(seconds_before), start_(Clock::now()) {}
+  double now() const {
+    return before_ + std::chrono::duration<double>(Clock::now() - start_).count();
+  }
+
+ private:
+  double before_;
+  Clock::time_point start_;
+};
+
+// What the run's steps need of the session: its progress callback and whether to stop.
+struct SessionHooks {
+  const FitProgressCallback& progress;
+  std::function<bool()> should_stop;
+  void report(const FitProgress& event) const {
+    if (progress) progress(event);
+  }
+};
+
+// The main strategy, generation by generation, each one checkpointed; fills the result's stop
+// reason and convergence.
+void run_main_strategy(const FitConfig& config, motoflex_es::Strategy& strategy,
+                       FitProblem& problem, motoflex_es::Evaluator& evaluator, detail::RunDir& dir,
+                       detail::RunDirState& saved, const RunClock& clock, const SessionHooks& s,
+                       detail::RunResult& result) {
+  motoflex_es::Budget budget;
+  budget.max_generations = config.budget.max_generations;
+  budget.max_evaluations = config.budget.max_evaluations;
+  budget.max_seconds = config.budget.max_seconds;
+  motoflex_es::RunCallbacks callbacks;
+  callbacks.on_generation = [&](const motoflex_es::Strategy& st,
+                                const motoflex_es::GenerationReport& report) {
+    const double seconds = clock.now();
+    const double sigma = detail::mean_sigma(st);
+    dir.append_generation(report, sigma, seconds);
+    dir.write_checkpoint(st, problem, saved, seconds);
+    FitProgress event;
+    event.generation = report.generation;
+    event.evaluations = report.evaluations;
+    event.best_fitness = report.best_fitness;
+    event.batch_median = report.batch_median;
+    event.mean_sigma = sigma;
+    event.stopped_early = problem.stopped_early();
+    event.seconds = seconds;
+    s.report(event);
+    return !s.should_stop();
+  };
+  const motoflex_es::RunSummary run =
+      motoflex_es::run_optimisation(strategy, problem, evaluator, budget, callbacks);
+  const bool interrupted = s.should_stop();
+  const bool finished = !interrupted && run.reason == motoflex_es::RunStopReason::kStrategy;
+  result.stop_reason =
+      interrupted ? std::string("interrupted") : std::string(motoflex_es::to_string(run.reason));
+  if (finished) {
+    result.stop_reason = std::string("strategy: ") + motoflex_es::to_string(strategy.stop_reason());
+    if (!strategy.stop_detail().empty()) result.stop_reason += " (" + strategy.stop_detail() + ")";
+  }
+  std::tie(result.converged, result.convergence) = convergence_of(run, strategy, interrupted);
+  // Only a strategy that stopped by itself is finished; a budget stop can be resumed with a
+  // larger budget.
+  if (finished) {
+    saved.main_done = true;
+    saved.converged = result.converged;
+    saved.convergence = result.convergence;
+    dir.write_checkpoint(strategy, problem, saved, clock.now());
+  }
+}
+
+// Optional local polish of the best point (NLopt keeps its state inside the library, so a
+// killed polish starts again from the main strategy's best).
+void run_polish(const FitConfig& config, const motoflex_es::Strategy& strategy, FitProblem& problem,
+                double seconds, const SessionHooks& hooks, detail::RunResult& result) {
+  motoflex_es::NloptOptions options;
+  options.algorithm = config.strategy.polish == "sbplx" ? motoflex_es::NloptAlgorithm::kSbplx
+                                                        : motoflex_es::NloptAlgorithm::kBobyqa;
+  options.start_point = result.best_x;
+  options.initial_step_relative = 0.02;
+  options.max_evaluations = config.strategy.polish_evaluations;
+  options.seed = config.seed;
+  motoflex_es::NloptOptimizer polish(strategy.bounds(), options);
+  motoflex_es::SerialEvaluator serial;
+  motoflex_es::Budget budget;
+  budget.max_evaluations = config.strategy.polish_evaluations;
+  const auto run = motoflex_es::run_optimisation(polish, problem, serial, budget);
+  result.polish_evaluations = run.evaluations;
+  if (polish.best_fitness() < result.best_fitness) {
+    result.best_fitness = polish.best_fitness();
+    result.best_x = polish.best_x();
+  }
+  FitProgress event;
+  event.polish = true;
+  event.polish_algorithm = config.strategy.polish;
+  event.evaluations = result.polish_evaluations;
+  event.best_fitness = result.best_fitness;
+  event.seconds = seconds;
+  hooks.report(event);
+}
+
+}  // namespace
+
 FitSummary FitSession::run() {
   State& s = *state_;
   const FitConfig& config = s.config;
@@ -129,109 +239,34 @@ FitSummary FitSession::run() {
   detail::RunDir dir(config);
   detail::RunDirState saved = s.resume ? dir.resume(*strategy, problem) : dir.start();
   dir.write_run_json();
-
   std::unique_ptr<motoflex_es::Evaluator> own_evaluator;
   motoflex_es::Evaluator* evaluator = s.evaluator;
   if (evaluator == nullptr) {
-    if (config.threads > 1) {
-      own_evaluator = std::make_unique<motoflex_es::OpenMpEvaluator>(config.threads);
-    } else {
-      own_evaluator = std::make_unique<motoflex_es::SerialEvaluator>();
-    }
+    own_evaluator = default_evaluator(config);
     evaluator = own_evaluator.get();
   }
-  const auto start = Clock::now();
-  const auto seconds_now = [&] {
-    return saved.seconds_before + std::chrono::duration<double>(Clock::now() - start).count();
-  };
+  const RunClock clock(saved.seconds_before);
+  const SessionHooks hooks{s.progress, [&s] { return s.should_stop(); }};
 
   detail::RunResult result;
   result.strategy = strategy->name();
   result.evaluator = evaluator->name();
   if (!saved.main_done) {
-    motoflex_es::Budget budget;
-    budget.max_generations = config.budget.max_generations;
-    budget.max_evaluations = config.budget.max_evaluations;
-    budget.max_seconds = config.budget.max_seconds;
-    motoflex_es::RunCallbacks callbacks;
-    callbacks.on_generation = [&](const motoflex_es::Strategy& st,
-                                  const motoflex_es::GenerationReport& report) {
-      const double seconds = seconds_now();
-      const double sigma = detail::mean_sigma(st);
-      dir.append_generation(report, sigma, seconds);
-      dir.write_checkpoint(st, problem, saved, seconds);
-      FitProgress event;
-      event.generation = report.generation;
-      event.evaluations = report.evaluations;
-      event.best_fitness = report.best_fitness;
-      event.batch_median = report.batch_median;
-      event.mean_sigma = sigma;
-      event.stopped_early = problem.stopped_early();
-      event.seconds = seconds;
-      s.report(event);
-      return !s.should_stop();
-    };
-    const motoflex_es::RunSummary run =
-        motoflex_es::run_optimisation(*strategy, problem, *evaluator, budget, callbacks);
-    const bool interrupted = s.should_stop();
-    result.stop_reason =
-        interrupted ? std::string("interrupted") : std::string(motoflex_es::to_string(run.reason));
-    if (!interrupted && run.reason == motoflex_es::RunStopReason::kStrategy) {
-      result.stop_reason =
-          std::string("strategy: ") + motoflex_es::to_string(strategy->stop_reason());
-      if (!strategy->stop_detail().empty()) {
-        result.stop_reason += " (" + strategy->stop_detail() + ")";
-      }
-    }
-    std::tie(result.converged, result.convergence) = convergence_of(run, *strategy, interrupted);
-    // Only a strategy that stopped by itself is finished; a budget stop can be resumed with a
-    // larger budget.
-    if (!interrupted && run.reason == motoflex_es::RunStopReason::kStrategy) {
-      saved.main_done = true;
-      saved.converged = result.converged;
-      saved.convergence = result.convergence;
-      dir.write_checkpoint(*strategy, problem, saved, seconds_now());
-    }
+    run_main_strategy(config, *strategy, problem, *evaluator, dir, saved, clock, hooks, result);
   } else {
     result.stop_reason = "finished before resume";
     result.converged = saved.converged;
     result.convergence = saved.convergence;
   }
-
-  // Optional local polish of the best point (NLopt keeps its state inside the library, so a
-  // killed polish starts again from the main strategy's best).
   result.best_fitness = strategy->best_fitness();
   result.best_x = strategy->best_x();
   if (!s.should_stop() && !config.strategy.polish.empty() && !result.best_x.empty()) {
-    motoflex_es::NloptOptions options;
-    options.algorithm = config.strategy.polish == "sbplx" ? motoflex_es::NloptAlgorithm::kSbplx
-                                                          : motoflex_es::NloptAlgorithm::kBobyqa;
-    options.start_point = result.best_x;
-    options.initial_step_relative = 0.02;
-    options.max_evaluations = config.strategy.polish_evaluations;
-    options.seed = config.seed;
-    motoflex_es::NloptOptimizer polish(strategy->bounds(), options);
-    motoflex_es::SerialEvaluator serial;
-    motoflex_es::Budget budget;
-    budget.max_evaluations = config.strategy.polish_evaluations;
-    const auto run = motoflex_es::run_optimisation(polish, problem, serial, budget);
-    result.polish_evaluations = run.evaluations;
-    if (polish.best_fitness() < result.best_fitness) {
-      result.best_fitness = polish.best_fitness();
-      result.best_x = polish.best_x();
-    }
-    FitProgress event;
-    event.polish = true;
-    event.polish_algorithm = config.strategy.polish;
-    event.evaluations = result.polish_evaluations;
-    event.best_fitness = result.best_fitness;
-    event.seconds = seconds_now();
-    s.report(event);
+    run_polish(config, *strategy, problem, clock.now(), hooks, result);
   }
   result.generations = strategy->generation();
   result.evaluations = strategy->evaluations() + result.polish_evaluations;
   if (s.should_stop()) result.stop_reason = "interrupted";
-  result.seconds = seconds_now();
+  result.seconds = clock.now();
   return detail::write_fit_outputs(config, problem, result);
 }
 

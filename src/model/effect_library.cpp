@@ -10,13 +10,25 @@ namespace motoflex {
 // (src/sim/effect_hooks.cpp), and its residual signature is probed by src/effects/.
 const std::vector<Effect>& effect_library() {
   static const std::vector<Effect> library = {
-      detail::encoder_offset_effect(),    detail::encoder_scale_effect(),
-      detail::sensor_delay_effect(),      detail::coulomb_friction_effect(),
-      detail::viscous_friction_effect(),  detail::stribeck_effect(),
-      detail::load_friction_effect(),     detail::backlash_effect(),
-      detail::joint_compliance_effect(),  detail::link_flexibility_effect(),
-      detail::resistance_drift_effect(),  detail::supply_sag_effect(),
-      detail::ground_compliance_effect(), detail::foot_slip_effect(),
+      detail::encoder_offset_effect(),
+      detail::encoder_scale_effect(),
+      detail::sensor_delay_effect(),
+      detail::coulomb_friction_effect(),
+      detail::viscous_friction_effect(),
+      detail::stribeck_effect(),
+      detail::load_friction_effect(),
+      detail::backlash_effect(),
+      detail::joint_compliance_effect(),
+      detail::link_flexibility_effect(),
+      detail::resistance_drift_effect(),
+      detail::supply_sag_effect(),
+      detail::ground_compliance_effect(),
+      detail::foot_slip_effect(),
+      // Appended, so that the order above (and the loop's ties) stays.
+      detail::directional_load_friction_effect(),
+      detail::load_stribeck_friction_effect(),
+      detail::quadratic_load_friction_effect(),
+      detail::armature_effect(),
   };
   return library;
 }

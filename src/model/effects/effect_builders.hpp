@@ -38,5 +38,9 @@ Effect resistance_drift_effect();
 Effect supply_sag_effect();
 Effect ground_compliance_effect();
 Effect foot_slip_effect();
+Effect directional_load_friction_effect();
+Effect load_stribeck_friction_effect();
+Effect quadratic_load_friction_effect();
+Effect armature_effect();
 
 }  // namespace motoflex::detail

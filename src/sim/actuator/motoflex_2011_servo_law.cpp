@@ -17,6 +17,7 @@
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/motoflex_command_file.hpp"
+#include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/gear_train.hpp"
 #include "motoflex/sim/actuator/motoflex_2011_stages.hpp"
 #include "motoflex/sim/actuator/pid.hpp"
@@ -41,7 +42,7 @@ struct Motoflex2011Params {
   double ratio = 1.0;                 // σ
   double b_joint_nm_s_per_rad = 0.0;  // B·σ at the joint per rad/s (= motor_viscous·σ²)
   GearParams gear;                    // joint side, ratio σ
-  JointFrictionParams friction;
+  FrictionParams friction;
   std::optional<std::size_t> column;  // the joint's index in the original's order
 };
 
@@ -135,7 +136,9 @@ std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   const ActuatorSpec& spec = model.actuators[actuator];
   std::vector<std::string> out(std::begin(kMotorNames), std::end(kMotorNames));
   for (const char* leaf : kGearLeaves) out.push_back("gear." + spec.group + "." + leaf);
-  for (auto& name : joint_friction_parameter_names(spec.name)) out.push_back(std::move(name));
+  for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kMotorLoad)) {
+    out.push_back(std::move(name));
+  }
   for (auto& name : motoflex_2011_switch_names()) out.push_back(std::move(name));
   return out;
 }
@@ -189,7 +192,7 @@ Motoflex2011Params read_params(const ServoLawSetup& setup) {
   p.gear.spring_nm_per_rad = get(gear + "spring_nm_per_rad");
   p.gear.mass_kg_m2 = get(gear + "mass_kg_m2");
   p.gear.viscous_nm_s_per_rad = get(gear + "viscous_nm_s_per_rad");
-  p.friction = read_joint_friction(get, spec.name);
+  p.friction = read_friction(get, spec.name, FrictionTerms::kMotorLoad);
   p.column = motoflex_2011_column(spec.name);
   if (p.switches.integral_gain_is_joint_index && !p.column) {
     throw ModelError(spec.name +
