@@ -59,6 +59,12 @@ KinematicTree load_urdf_tree(const std::string& urdf_path);
 // not have exactly one child joint.
 void split_flexible_link(KinematicTree& tree, const std::string& link, int pieces);
 
+// Splits `link`, a single homogeneous box (the 2011 program's legs, motoflex_2011.md §2.9), into
+// `pieces` equal boxes stacked along the box axis closest to the vector from the link's origin
+// to its child joint, joined by kFlex joints where their faces meet; each piece has a box's
+// inertia. Throws std::invalid_argument unless the link has exactly one child joint and one box.
+void split_flexible_box(KinematicTree& tree, const std::string& link, int pieces);
+
 // World pose of every link for the given joint angles (radians by joint index; fixed and flex
 // joints ignore their entry).
 std::vector<Eigen::Isometry3d> link_poses(const KinematicTree& tree,

@@ -49,6 +49,7 @@ struct RobotYaml {
   std::map<std::string, double> held;
   std::vector<std::pair<std::string, std::string>> universal_pairs;
   std::vector<std::string> flexible_links;
+  bool flexible_split_box = false;  // `flexible_split: box` (default `span`)
   std::vector<std::string> feet;
   double max_tilt_rad = 1.0;
   double min_torso_height_m = 0.0;
@@ -59,8 +60,8 @@ struct RobotYaml {
 RobotYaml read_robot_yaml(const YamlValue& root) {
   root.require_keys_within({"name", "urdf", "root_link", "fixed_base", "torso_link", "servo",
                             "joint_stops", "actuated_joints", "held_joints", "universal_joints",
-                            "flexible_links", "feet", "fall", "initial_clearance_m", "stand_pose",
-                            "parameters"});
+                            "flexible_links", "flexible_split", "feet", "fall",
+                            "initial_clearance_m", "stand_pose", "parameters"});
   RobotYaml out;
   out.name = root.at("name").as_string();
   out.urdf_path = root.resolve_path(root.at("urdf").as_string());
@@ -87,6 +88,11 @@ RobotYaml read_robot_yaml(const YamlValue& root) {
     }
   }
   if (const auto links = root.find("flexible_links")) out.flexible_links = links->as_string_list();
+  if (const auto split = root.find("flexible_split")) {
+    const std::string how = split->as_string();
+    if (how != "span" && how != "box") split->fail("expected 'span' or 'box'");
+    out.flexible_split_box = how == "box";
+  }
   if (const auto feet = root.find("feet")) out.feet = feet->as_string_list();
   if (const auto fall = root.find("fall")) {
     fall->require_keys_within({"max_tilt_rad", "min_torso_height_m"});
@@ -173,7 +179,11 @@ RobotModel load_robot_model(const std::string& robot_dir, const StructureOptions
   // --- structure edits -------------------------------------------------------------------------
   for (const auto& link : spec.flexible_links) {
     try {
-      detail::split_flexible_link(tree, link, structure.flex_sub_bodies);
+      if (spec.flexible_split_box) {
+        detail::split_flexible_box(tree, link, structure.flex_sub_bodies);
+      } else {
+        detail::split_flexible_link(tree, link, structure.flex_sub_bodies);
+      }
     } catch (const std::invalid_argument& error) {
       root.at("flexible_links").fail(error.what());
     }
