@@ -26,8 +26,6 @@
 namespace motoflex {
 namespace {
 
-// The original's frame (frameLen), the step its D term is per (§2.4).
-constexpr double kOriginalFrame_s = 0.001;
 // Our angle = kOurSign · the original's ODE angle, for every joint (§2.1).
 constexpr double kOurSign = -1.0;
 
@@ -51,8 +49,8 @@ class Motoflex2011ServoLaw final : public ServoLaw {
   Motoflex2011ServoLaw(const Motoflex2011Params& p, double dt_s, int gear_substeps)
       : params_(p),
         dt_s_(dt_s),
-        voltage_pid_(voltage_gains(p, dt_s), dt_s),
-        velocity_pid_(velocity_gains(p), dt_s),
+        voltage_pid_(motoflex_2011_voltage_gains(p.voltage_pid, p.switches, p.column, dt_s), dt_s),
+        velocity_pid_(motoflex_2011_velocity_gains(p.switches, p.column), dt_s),
         voltage_(p.supply_v, p.resistance_ohm, p.inductance_h, dt_s,
                  p.switches.voltage_clamp_upper_only, p.switches.voltage_delay) {
     if (p.switches.gear_semi_implicit_euler) {
@@ -101,20 +99,6 @@ class Motoflex2011ServoLaw final : public ServoLaw {
   }
 
  private:
-  static double integral_gain(const Motoflex2011Params& p, double physical) {
-    return p.switches.integral_gain_is_joint_index ? static_cast<double>(*p.column) : physical;
-  }
-  static PidGains voltage_gains(const Motoflex2011Params& p, double dt_s) {
-    PidGains gains = p.voltage_pid;
-    gains.ki_v_per_rad_s = integral_gain(p, p.voltage_pid.ki_v_per_rad_s);
-    // §2.4: D·Δe per frame of the original, i.e. kd/1 ms per step, which Pid divides by dt.
-    if (p.switches.derivative_per_frame) gains.kd_v_s_per_rad *= dt_s / kOriginalFrame_s;
-    return gains;
-  }
-  static PidGains velocity_gains(const Motoflex2011Params& p) {
-    return {p.switches.velocity_kp_per_s, integral_gain(p, 0.0), 0.0};
-  }
-
   Motoflex2011Params params_;
   double dt_s_;
   Pid voltage_pid_;
@@ -194,12 +178,11 @@ Motoflex2011Params read_params(const ServoLawSetup& setup) {
   p.gear.viscous_nm_s_per_rad = get(gear + "viscous_nm_s_per_rad");
   p.friction = read_friction(get, spec.name, FrictionTerms::kMotorLoad);
   p.column = motoflex_2011_column(spec.name);
-  if (p.switches.integral_gain_is_joint_index && !p.column) {
-    throw ModelError(spec.name +
-                     " is not a joint of the 2011 program, so it has no index for the I gain "
-                     "(set motoflex_2011.integral_gain_is_joint_index to 0)");
-  }
   return p;
+}
+
+std::vector<ParameterSpec> defaults(const RobotModel&, std::size_t) {
+  return motoflex_2011_switch_defaults();
 }
 
 std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
@@ -215,10 +198,12 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
 }  // namespace
 
 ServoLawInfo motoflex_2011_servo_law_info() {
-  return {"motoflex_2011",
-          "seed 001 as the 2011 program runs it: velocity start-up, B as a frozen bias, "
-          "friction at the frozen velocity (switches motoflex_2011.*)",
-          names, create};
+  ServoLawInfo info{"motoflex_2011",
+                    "seed 001 as the 2011 program runs it: velocity start-up, B as a frozen bias, "
+                    "friction at the frozen velocity (switches motoflex_2011.*)",
+                    names, create};
+  info.default_parameters = defaults;
+  return info;
 }
 
 }  // namespace motoflex

@@ -20,6 +20,54 @@ std::vector<std::string> motoflex_2011_switch_names() {
           "motoflex_2011.gear_semi_implicit_euler"};
 }
 
+std::vector<ParameterSpec> motoflex_2011_switch_defaults() {
+  const Motoflex2011Switches original;
+  const std::vector<std::string> n = motoflex_2011_switch_names();
+  const auto flag = [](const std::string& name) { return ParameterSpec{name, "1", 1.0, 0.0, 1.0}; };
+  return {{n[0], "s", original.velocity_phase_s, 0.0, 5.0},
+          {n[1], "1/s", original.velocity_kp_per_s, 0.1, 1000.0},
+          {n[2], "N·m", original.velocity_fmax_nm, 0.0, 1000.0},
+          flag(n[3]),
+          flag(n[4]),
+          flag(n[5]),
+          flag(n[6]),
+          flag(n[7]),
+          flag(n[8]),
+          flag(n[9]),
+          flag(n[10])};
+}
+
+namespace {
+
+// The original's frame (frameLen), the step its D term is per (§2.4).
+constexpr double kOriginalFrame_s = 0.001;
+
+double integral_gain(const Motoflex2011Switches& s, std::optional<std::size_t> column,
+                     double physical) {
+  if (!s.integral_gain_is_joint_index) return physical;
+  if (!column) {
+    throw std::invalid_argument(
+        "not a joint of the 2011 program, so it has no index for the I gain (set "
+        "motoflex_2011.integral_gain_is_joint_index to 0)");
+  }
+  return static_cast<double>(*column);
+}
+
+}  // namespace
+
+PidGains motoflex_2011_voltage_gains(const PidGains& physical, const Motoflex2011Switches& s,
+                                     std::optional<std::size_t> column, double dt_s) {
+  PidGains gains = physical;
+  gains.ki_v_per_rad_s = integral_gain(s, column, physical.ki_v_per_rad_s);
+  if (s.derivative_per_frame) gains.kd_v_s_per_rad *= dt_s / kOriginalFrame_s;
+  return gains;
+}
+
+PidGains motoflex_2011_velocity_gains(const Motoflex2011Switches& s,
+                                      std::optional<std::size_t> column) {
+  return {s.velocity_kp_per_s, integral_gain(s, column, 0.0), 0.0};
+}
+
 VoltageStage2011::VoltageStage2011(double supply_v, double resistance_ohm, double inductance_h,
                                    double dt_s, bool upper_clamp_only, bool delay)
     : supply_v_(supply_v), upper_clamp_only_(upper_clamp_only), delay_(delay) {

@@ -6,8 +6,13 @@
 // original's behaviour and the physical one item by item (§2.3–§2.8). The law itself is
 // src/sim/actuator/motoflex_2011_servo_law.cpp.
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "motoflex/model/parameters.hpp"
+#include "motoflex/sim/actuator/pid.hpp"
 
 namespace motoflex {
 
@@ -54,6 +59,21 @@ struct Motoflex2011Switches {
 // The names of the switches as robot parameters (motoflex_2011.velocity_phase_s, ...), in the
 // order of the struct.
 std::vector<std::string> motoflex_2011_switch_names();
+
+// The switches as robot parameters with the original's values as defaults (flags 0/1).
+std::vector<ParameterSpec> motoflex_2011_switch_defaults();
+
+// The gains of the voltage PID as the 2011 program applies them at physics step `dt_s`, from the
+// robot's `physical` gains (pid.*): with integral_gain_is_joint_index the I gain is `column`
+// (the joint's index in the original's order, §2.4; std::invalid_argument when it has none),
+// and with derivative_per_frame kd acts per 1 ms frame of the original (kd·Δe per frame, so
+// Pid's kd·Δe/dt needs kd·dt/1 ms).
+PidGains motoflex_2011_voltage_gains(const PidGains& physical, const Motoflex2011Switches& s,
+                                     std::optional<std::size_t> column, double dt_s);
+// The velocity-phase PID (§2.3): P = velocity_kp_per_s, I = `column` with
+// integral_gain_is_joint_index (else 0), no D. Output in rad/s per rad of error.
+PidGains motoflex_2011_velocity_gains(const Motoflex2011Switches& s,
+                                      std::optional<std::size_t> column);
 
 // The original's voltage stage (motoflex_2011.md §2.5, `Motor::getTargetTorque`): the PID's
 // output clamped (at +supply_v only, or to ±supply_v), then the RL impedance
