@@ -61,7 +61,8 @@ nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
           {"steps", c.steps},
           {"mujoco_steps_per_s", c.mujoco_steps_per_s},
           {"motoflex_steps_per_s", c.motoflex_steps_per_s},
-          {"motoflex_end", c.motoflex_end}};
+          {"motoflex_end", c.motoflex_end},
+          {"geoms", c.geoms}};
 }
 
 const Exporter& check_arguments(const ExportArgs& args) {

@@ -167,6 +167,7 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
                  ". Lost in MJCF: backlash, gear spring and mass, PID integral, motor "
                  "inductance, Stribeck/load friction, contact slip, sensor effects (see the JSON "
                  "export).");
+  mujoco.comment(provenance_comment(input.provenance, input.servo));
   mujoco.child("compiler").attribute("angle", "radian").attribute("inertiafromgeom", "false");
   mujoco.child("option")
       .attribute("timestep", input.dt_s)

@@ -203,6 +203,7 @@ std::string export_sdf(const ExportInput& input) {
               ". Joint dynamics and limits are the fitted joint-level values; <motoflex:servo> "
               "(ignored by simulators) holds the linearised servo gains and the armature, which "
               "SDF cannot express.");
+  sdf.comment(provenance_comment(input.provenance, input.servo));
   XmlElement& world = sdf.child("world");
   world.attribute("name", "motoflex_" + robot.name);
   world.text_child("gravity", "0 0 -9.81");

@@ -1,9 +1,12 @@
 #include "fit_outputs.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/build_info.hpp"
+#include "motoflex/core/text_hash.hpp"
 #include "motoflex/core/utc_time.hpp"
 #include "motoflex/fit/fit_report.hpp"
 #include "motoflex/io/plot_script.hpp"
@@ -12,6 +15,23 @@ namespace motoflex::detail {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The logs a fit read, each with its role and the hash of its CSV (so an export can say which
+// data its numbers came from, and a changed file shows).
+nlohmann::ordered_json data_files_json(const FitConfig& config) {
+  nlohmann::ordered_json files = nlohmann::ordered_json::array();
+  const auto add = [&files](const std::vector<std::string>& paths, const char* role) {
+    for (const auto& path : paths) {
+      std::ifstream in(path, std::ios::binary);
+      std::stringstream text;
+      text << in.rdbuf();
+      files.push_back({{"role", role}, {"path", path}, {"hash", hash_text(text.str())}});
+    }
+  };
+  add(config.train_logs, "train");
+  add(config.validation_logs, "validation");
+  return files;
+}
 
 void write_best_json(const FitConfig& config, const RunResult& result, const ParameterSet& best) {
   nlohmann::ordered_json best_json;
@@ -24,7 +44,9 @@ void write_best_json(const FitConfig& config, const RunResult& result, const Par
                              {"config_hash", config.hash},
                              {"robot", config.scenario->model->name},
                              {"date", utc_now_iso8601()},
-                             {"motoflex_version", version()}};
+                             {"motoflex_version", version()},
+                             {"run", fs::absolute(config.out_dir).lexically_normal().string()},
+                             {"data", data_files_json(config)}};
   write_file_atomically((fs::path(config.out_dir) / "best.json").string(),
                         best_json.dump(2) + "\n");
 }
