@@ -7,6 +7,8 @@
 #include <limits>
 #include <optional>
 
+#include "ground_colliders.hpp"
+#include "mimic_coupling.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/model/body_kinematics.hpp"
 #include "motoflex/sim/actuator/servo_law.hpp"
@@ -19,7 +21,6 @@
 namespace motoflex {
 namespace {
 
-constexpr int kMaxContactsPerFoot = 4;
 constexpr double kMaxLinearSpeed_m_s = 50.0;  // beyond this a legged robot has diverged
 constexpr double kMaxAngularSpeed_rad_s = 500.0;
 constexpr double kHeldTorsoClearance_m = 0.1;  // feet above the ground when the torso is held
@@ -96,20 +97,16 @@ struct Rollout::Impl {
   std::vector<dBodyID> bodies;  // nullptr for a static (welded) body
   std::vector<dJointID> joints;
   std::vector<dJointID> flex_friction_motors;
-  std::vector<dGeomID> geoms;
-  struct GeomRef {
-    dGeomID geom;
-    dBodyID body;
-    bool is_foot;
-    std::size_t body_index;
-  };
-  std::vector<GeomRef> foot_geoms;
+  detail::GroundColliders colliders;
+  std::vector<detail::ShapeGeom> foot_geoms;     // feet: contacts and force sensors
+  std::vector<detail::ShapeGeom> contact_geoms;  // contact_links: contacts, never a fall
+  std::vector<detail::ShapeGeom> other_geoms;    // touching the ground is a fall
   std::vector<dJointFeedback> joint_feedback;    // per model joint (enable_joint_feedback)
-  std::vector<dJointFeedback> contact_feedback;  // kMaxContactsPerFoot per foot box
-  std::vector<std::size_t> contact_owner;        // foot box of each used feedback slot
+  std::vector<dJointFeedback> contact_feedback;  // max_contacts per foot shape
+  std::vector<std::size_t> contact_owner;        // foot shape of each used feedback slot
   std::size_t contacts_used = 0;
-  std::vector<Eigen::Vector3d> foot_force_n;  // ground force on each foot box (world frame)
-  std::vector<GeomRef> other_geoms;
+  std::vector<Eigen::Vector3d> foot_force_n;  // ground force on each foot shape (world frame)
+  std::vector<detail::MimicCoupling> mimics;
 
   std::vector<detail::OdeAxis> axes;                 // per actuator
   std::vector<double> joint_torque1, joint_torque2;  // per model joint, accumulated each step
@@ -131,7 +128,6 @@ struct Rollout::Impl {
   ~Impl() {
     if (world != nullptr) dWorldSetStepThreadingImplementation(world, nullptr, nullptr);
     if (threading != nullptr) dThreadingFreeImplementation(threading);
-    for (dGeomID g : geoms) dGeomDestroy(g);
     if (ground != nullptr) dGeomDestroy(ground);
     if (contact_group != nullptr) dJointGroupDestroy(contact_group);
     if (world != nullptr) dWorldDestroy(world);  // also destroys bodies and joints
@@ -142,6 +138,7 @@ struct Rollout::Impl {
   void build_joints();
   void build_actuators(const ParameterSet& values);
   void add_damping_row(std::size_t actuator, double damping_nm_s_per_rad);
+  void add_mimic_couplings();
   void place(const std::vector<double>& pose_rad);
   void apply_servos(const double* now_rad, const double* next_rad);
   void apply_flex_springs();
@@ -204,23 +201,23 @@ void Rollout::Impl::build_bodies() {
       dBodySetPosition(body, com.x(), com.y(), com.z());
       bodies[b] = body;
     }
-    for (const BoxGeom& box : spec.boxes) {
-      dGeomID geom = dCreateBox(nullptr, box.size_m.x(), box.size_m.y(), box.size_m.z());
-      geoms.push_back(geom);
-      dMatrix3 R;
-      to_ode_rotation(box.X_BG.linear(), R);
-      if (bodies[b] != nullptr) {
-        dGeomSetBody(geom, bodies[b]);
-        const Eigen::Vector3d offset = box.X_BG.translation() + spec.com_W0_m - com;
-        dGeomSetOffsetPosition(geom, offset.x(), offset.y(), offset.z());
-        dGeomSetOffsetRotation(geom, R);
-      } else {
-        const Eigen::Vector3d p = box.X_BG.translation() + spec.com_W0_m;
-        dGeomSetPosition(geom, p.x(), p.y(), p.z());
-        dGeomSetRotation(geom, R);
-        continue;  // the welded base never falls
+    for (const CollisionShape& shape : spec.collisions) {
+      // On a body the offset from the ODE body's position; on the welded base a world pose.
+      const Eigen::Vector3d p = shape.X_BG.translation() + spec.com_W0_m -
+                                (bodies[b] != nullptr ? com : Eigen::Vector3d::Zero());
+      const detail::ShapeGeom geom = colliders.add(shape, bodies[b], b, p);
+      if (bodies[b] == nullptr) continue;  // the welded base never falls
+      switch (shape.contact) {
+        case GroundContact::kFoot:
+          foot_geoms.push_back(geom);
+          break;
+        case GroundContact::kContact:
+          contact_geoms.push_back(geom);
+          break;
+        case GroundContact::kFall:
+          other_geoms.push_back(geom);
+          break;
       }
-      (box.is_foot ? foot_geoms : other_geoms).push_back({geom, bodies[b], box.is_foot, b});
     }
   }
 }
@@ -233,6 +230,18 @@ void Rollout::Impl::build_joints() {
     dBodyID parent = bodies[spec.parent_body];
     dBodyID child = bodies[spec.child_body];
     const Eigen::Vector3d& a = spec.anchor_W0_m;
+    if (spec.kind == JointKind::kSlider) {
+      // body1 = child: ODE's slider position is body1 relative to body2 along the axis, ours.
+      dJointID joint = dJointCreateSlider(world, nullptr);
+      dJointAttach(joint, child, parent);
+      dJointSetSliderAxis(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
+      if (std::isfinite(spec.lower1_rad)) {
+        dJointSetSliderParam(joint, dParamLoStop, spec.lower1_rad);
+        dJointSetSliderParam(joint, dParamHiStop, spec.upper1_rad);
+      }
+      joints[j] = joint;
+      continue;
+    }
     if (spec.kind == JointKind::kHinge) {
       // body1 = child: ODE's hinge angle is body1 relative to body2, our convention.
       dJointID joint = dJointCreateHinge(world, nullptr);
@@ -307,12 +316,7 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
   applied_torque_nm.assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const ActuatorSpec& spec = model.actuators[i];
-    detail::OdeAxis axis;
-    axis.joint = joints[spec.joint];
-    axis.universal = model.joints[spec.joint].kind != JointKind::kHinge;
-    axis.axis = spec.axis;
-    axis.sign = axis.universal ? -1.0 : 1.0;
-    axes.push_back(axis);
+    axes.push_back(detail::ode_axis(joints[spec.joint], model.joints[spec.joint], spec.axis));
     encoders.emplace_back(params.encoder, options.dt_s,
                           RandomStream({options.seed, kEncoderNoisePurpose, i}));
     const ParameterReader reader(values, laws[i]->name);
@@ -332,6 +336,18 @@ void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_pe
   dBodyID parent = bodies[joint.parent_body];
   dBodyID child = bodies[joint.child_body];
   const Eigen::Vector3d& axis = spec.axis == 1 ? joint.axis1_W0 : joint.axis2_W0;
+  if (joint.kind == JointKind::kSlider) {
+    // The same damper along a slider: a linear motor row (N·s/m), axis fixed in the parent.
+    dJointID motor = dJointCreateLMotor(world, nullptr);
+    dJointAttach(motor, child, parent);
+    dJointSetLMotorNumAxes(motor, 1);
+    const int frame = parent != nullptr ? 2 : 0;  // relative to body2 = parent, or global
+    dJointSetLMotorAxis(motor, 0, frame, axis.x(), axis.y(), axis.z());
+    dJointSetLMotorParam(motor, dParamVel, 0.0);
+    dJointSetLMotorParam(motor, dParamFMax, dInfinity);
+    dJointSetLMotorParam(motor, dParamCFM, 1.0 / damping_nm_s_per_rad);
+    return;
+  }
   // The axis rides on the body that carries it: a hinge axis is fixed in both bodies, a
   // universal joint's axis 1 in the parent and axis 2 in the child; a static body is the world.
   dBodyID carrier =
@@ -354,10 +370,24 @@ void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_pe
   dJointSetAMotorParam(motor, dParamCFM, 1.0 / damping_nm_s_per_rad);
 }
 
+void Rollout::Impl::add_mimic_couplings() {
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const auto& mimic = model.joints[j].mimic;
+    if (!mimic) continue;
+    mimics.push_back({detail::ode_axis(joints[j], model.joints[j], 1),
+                      detail::ode_axis(joints[mimic->leader_joint],
+                                       model.joints[mimic->leader_joint], mimic->leader_axis),
+                      mimic->multiplier, mimic->offset});
+  }
+}
+
 void Rollout::Impl::place(const std::vector<double>& pose_rad) {
   std::vector<Eigen::Isometry3d> poses = body_poses(model, pose_rad);
   if (!model.fixed_base) {
-    const double lowest = lowest_foot_point_z(model, poses);
+    // Feet go to the ground; a robot without feet is placed by all its shapes (held in the
+    // air, or dropped onto whatever touches first).
+    double lowest = lowest_foot_point_z(model, poses);
+    if (!std::isfinite(lowest)) lowest = lowest_shape_point_z(model, poses);
     if (std::isfinite(lowest)) {
       const double clearance_m =
           options.hold_torso ? kHeldTorsoClearance_m : model.initial_clearance_m;
@@ -422,6 +452,8 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
     if (joint_torque1[j] == 0.0 && joint_torque2[j] == 0.0) continue;
     if (model.joints[j].kind == JointKind::kHinge) {
       dJointAddHingeTorque(joints[j], joint_torque1[j]);
+    } else if (model.joints[j].kind == JointKind::kSlider) {
+      dJointAddSliderForce(joints[j], joint_torque1[j]);
     } else {
       dJointAddUniversalTorques(joints[j], joint_torque1[j], joint_torque2[j]);
     }
@@ -439,24 +471,30 @@ void Rollout::Impl::apply_flex_springs() {
 }
 
 void Rollout::Impl::collide_feet() {
-  dContactGeom contacts[kMaxContactsPerFoot];
+  dContactGeom contacts[detail::kMaxGroundContacts];
   std::size_t used = 0;
+  const auto attach = [&](const detail::ShapeGeom& shape, int k) {
+    dContact contact = contact_template;
+    contact.geom = contacts[k];
+    dJointID joint = dJointCreateContact(world, contact_group, &contact);
+    dJointAttach(joint, shape.body, nullptr);
+    return joint;
+  };
   for (std::size_t f = 0; f < foot_geoms.size(); ++f) {
-    const GeomRef& foot = foot_geoms[f];
-    const int n = dCollide(foot.geom, ground, kMaxContactsPerFoot, contacts, sizeof(dContactGeom));
+    const int n = detail::GroundColliders::collide(foot_geoms[f], ground, contacts);
     for (int k = 0; k < n; ++k) {
-      dContact contact = contact_template;
-      contact.geom = contacts[k];
-      dJointID joint = dJointCreateContact(world, contact_group, &contact);
-      dJointAttach(joint, foot.body, nullptr);
       // The contact force is read back after the step (foot force sensor); the feedback
       // buffers are preallocated, one per possible contact.
-      dJointSetFeedback(joint, &contact_feedback[used]);
+      dJointSetFeedback(attach(foot_geoms[f], k), &contact_feedback[used]);
       contact_owner[used] = f;
       ++used;
     }
   }
   contacts_used = used;
+  for (const detail::ShapeGeom& shape : contact_geoms) {
+    const int n = detail::GroundColliders::collide(shape, ground, contacts);
+    for (int k = 0; k < n; ++k) attach(shape, k);
+  }
 }
 
 void Rollout::Impl::read_foot_forces() {
@@ -468,7 +506,7 @@ void Rollout::Impl::read_foot_forces() {
 }
 
 std::optional<std::string> Rollout::Impl::fall_reason(const Rollout& self) const {
-  for (const GeomRef& ref : other_geoms) {
+  for (const detail::ShapeGeom& ref : other_geoms) {
     dReal aabb[6];
     dGeomGetAABB(ref.geom, aabb);
     if (aabb[4] <= 0.0) return model.bodies[ref.body_index].name + " touched the ground";
@@ -513,7 +551,10 @@ Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
   impl_->build_bodies();
   impl_->build_joints();
   impl_->build_actuators(parameters);
-  impl_->contact_feedback.resize(impl_->foot_geoms.size() * kMaxContactsPerFoot);
+  impl_->add_mimic_couplings();
+  std::size_t foot_contacts = 0;
+  for (const auto& foot : impl_->foot_geoms) foot_contacts += foot.max_contacts;
+  impl_->contact_feedback.resize(foot_contacts);
   impl_->contact_owner.resize(impl_->contact_feedback.size());
   impl_->foot_force_n.assign(impl_->foot_geoms.size(), Eigen::Vector3d::Zero());
   impl_->place(initial_pose_rad);
@@ -530,6 +571,7 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
   Impl& s = *impl_;
   try {
     s.apply_servos(command_now_rad, command_next_rad);
+    for (const auto& mimic : s.mimics) mimic.drive(s.options.dt_s);
     s.apply_flex_springs();
     s.collide_feet();
     const int ok = s.options.solver == StepSolver::kStep ? dWorldStep(s.world, s.options.dt_s)

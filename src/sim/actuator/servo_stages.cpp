@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/model/joint_units.hpp"
 
 namespace motoflex {
 
@@ -50,21 +51,64 @@ MotorCommand joint_friction(const JointFrictionParams& params, double velocity_r
   return MotorCommand{0.0, budget_nm};
 }
 
-JointFrictionParams read_joint_friction(const ParameterReader& get, const std::string& joint) {
-  const std::string prefix = "joint." + joint + ".";
+namespace {
+
+JointFrictionParams read_friction_names(const ParameterReader& get,
+                                        const std::vector<std::string>& names,
+                                        const std::string& prefix) {
   JointFrictionParams friction;
-  friction.coulomb_nm = get(prefix + "friction_nm");
-  friction.viscous_nm_s_per_rad = get(prefix + "viscous_nm_s_per_rad");
-  friction.stribeck_nm = get(prefix + "stribeck_nm");
-  friction.stribeck_velocity_rad_s = get(prefix + "stribeck_velocity_rad_s");
-  friction.load_coefficient = get(prefix + "load_friction");
+  friction.coulomb_nm = get(names[0]);
+  friction.viscous_nm_s_per_rad = get(names[1]);
+  friction.stribeck_nm = get(names[2]);
+  friction.stribeck_velocity_rad_s = get(names[3]);
+  friction.load_coefficient = get(names[4]);
   if (friction.coulomb_nm < 0.0 || friction.viscous_nm_s_per_rad < 0.0 ||
       friction.stribeck_nm < 0.0 || !(friction.stribeck_velocity_rad_s > 0.0) ||
       friction.load_coefficient < 0.0) {
-    throw ModelError("friction parameters of " + prefix + "* must not be negative (" + prefix +
-                     "stribeck_velocity_rad_s > 0)");
+    throw ModelError("friction parameters of " + prefix + "* must not be negative (" + names[3] +
+                     " > 0)");
   }
   return friction;
+}
+
+double finite_or(double value, double fallback) {
+  return std::isfinite(value) && value >= 0.0 ? value : fallback;
+}
+
+}  // namespace
+
+JointFrictionParams read_joint_friction(const ParameterReader& get, const std::string& joint) {
+  return read_friction_names(get, joint_friction_parameter_names(joint), "joint." + joint + ".");
+}
+
+JointFrictionParams read_joint_friction(const ParameterReader& get, const ActuatorSpec& joint) {
+  return read_friction_names(get, joint_friction_parameter_names(joint),
+                             "joint." + joint.name + ".");
+}
+
+std::vector<std::string> joint_friction_parameter_names(const ActuatorSpec& joint) {
+  const JointUnits u = joint_units(joint);
+  return {joint_parameter(joint, "friction", u.effort),
+          joint_parameter(joint, "viscous", u.damping),
+          joint_parameter(joint, "stribeck", u.effort),
+          joint_parameter(joint, "stribeck_velocity", u.velocity),
+          "joint." + joint.name + ".load_friction"};
+}
+
+std::vector<ParameterDefault> joint_friction_defaults(const ActuatorSpec& joint,
+                                                      const JointHints& hints) {
+  const JointUnits u = joint_units(joint);
+  const double effort_share = std::isfinite(hints.effort) ? 0.5 * hints.effort : 0.0;
+  const auto entry = [&](const std::string& name, double hint, const char* what) {
+    const double start = finite_or(hint, 0.0);
+    const double upper = std::max({1.0, effort_share, 5.0 * start});
+    return ParameterDefault{name, start, 0.0, upper,
+                            std::isfinite(hint) && hint >= 0.0
+                                ? std::string("URDF <dynamics ") + what + ">"
+                                : std::string("none in the URDF: 0, up to max(1, effort/2)")};
+  };
+  return {entry(joint_parameter(joint, "friction", u.effort), hints.friction, "friction"),
+          entry(joint_parameter(joint, "viscous", u.damping), hints.damping, "damping")};
 }
 
 std::vector<std::string> joint_friction_parameter_names(const std::string& joint) {

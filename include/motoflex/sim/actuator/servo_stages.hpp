@@ -63,5 +63,14 @@ MotorCommand joint_friction(const JointFrictionParams& params, double velocity_r
 JointFrictionParams read_joint_friction(const ParameterReader& get, const std::string& joint);
 // The names read_joint_friction reads, in its order.
 std::vector<std::string> joint_friction_parameter_names(const std::string& joint);
+// The same for any actuated joint: a prismatic joint's names are in N and m
+// (joint.<J>.friction_n, viscous_n_s_per_m, stribeck_n, stribeck_velocity_m_s, load_friction).
+JointFrictionParams read_joint_friction(const ParameterReader& get, const ActuatorSpec& joint);
+std::vector<std::string> joint_friction_parameter_names(const ActuatorSpec& joint);
+// Starting values of joint.<J>.friction and .viscous for a new robot folder: the URDF's
+// <dynamics friction damping> or 0, searched in [0, max(1, effort/2, 5·start)] (N·m or N;
+// N·m·s/rad or N·s/m) with effort the URDF's limit when it has one.
+std::vector<ParameterDefault> joint_friction_defaults(const ActuatorSpec& joint,
+                                                      const JointHints& hints);
 
 }  // namespace motoflex
