@@ -1,5 +1,6 @@
 #include "joint_builder.hpp"
 
+#include <limits>
 #include <map>
 #include <set>
 #include <tuple>
@@ -78,7 +79,12 @@ void attach_mimics(RobotModel& model, const UrdfTree& tree, const AxisOf& axis_o
       const auto it = axis_of.find(follower->name);
       if (it != axis_of.end()) std::tie(mimic.leader_joint, mimic.leader_axis) = it->second;
     }
-    if (mimic.leader_joint >= 0) joint.mimic = mimic;
+    if (mimic.leader_joint < 0) continue;
+    joint.mimic = mimic;
+    // The coupling sets where a follower is; its own stops could only fight it (and ODE's
+    // powered stop pushes with the motor's unbounded force).
+    joint.lower1_rad = -std::numeric_limits<double>::infinity();
+    joint.upper1_rad = std::numeric_limits<double>::infinity();
   }
 }
 

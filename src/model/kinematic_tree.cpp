@@ -103,6 +103,7 @@ void split_flexible_link(UrdfTree& tree, const std::string& link_name, int piece
   for (int k = 0; k < pieces; ++k) {
     UrdfLink& piece = tree.links[ids[k]];
     const Eigen::Vector3d origin = (static_cast<double>(k) / pieces) * span;
+    piece.has_inertial = whole.has_inertial;
     piece.mass_kg = piece_mass;
     piece.com_L_m = com[k] - origin;
     piece.inertia_kg_m2 = piece_inertia;

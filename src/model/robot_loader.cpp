@@ -34,6 +34,7 @@ RobotModel model_header(const detail::RobotYaml& spec, const std::string& robot_
   model.min_torso_height_m = spec.min_torso_height_m;
   model.initial_clearance_m = spec.initial_clearance_m;
   model.joint_stops = spec.joint_stops;
+  model.ground = spec.ground;
   model.stand_pose_rad = spec.stand_pose;
   return model;
 }
@@ -66,6 +67,12 @@ std::optional<RobotModel> load_robot_model(const std::string& robot_dir,
   std::optional<UrdfTree> tree;
   if (!errors.check([&] { tree = read_urdf_tree(spec.urdf_path, errors); })) return std::nullopt;
   detail::check_robot_yaml(spec, *tree, *root, errors);
+  for (const auto& limits : spec.joint_limits) {
+    UrdfJoint& joint = tree->joints[tree->joint_index(limits.joint)];
+    joint.limited = true;
+    joint.lower_rad = limits.lower;
+    joint.upper_rad = limits.upper;
+  }
   split_flexible_links(*tree, spec, *root, structure.flex_sub_bodies, errors);
 
   // Build configuration: held joints at their position, everything else at zero.

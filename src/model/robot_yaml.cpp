@@ -65,6 +65,18 @@ void read_structure(const YamlValue& root, RobotYaml& out, ErrorCollector& error
       out.flexible_links = links->as_string_list();
   });
   errors.check([&] { out.joint_stops = root.get_bool("joint_stops", true); });
+  errors.check([&] { out.ground = root.get_bool("ground", true); });
+  errors.check([&] {
+    if (const auto limits = root.find("joint_limits")) {
+      for (const auto& [joint, range] : limits->entries()) {
+        errors.check([&, &joint = joint, &range = range] {
+          const auto pair = range.as_double_list();
+          if (pair.size() != 2 || !(pair[0] < pair[1])) range.fail("expected [lower, upper]");
+          out.joint_limits.push_back({joint, pair[0], pair[1], range});
+        });
+      }
+    }
+  });
 }
 
 void read_contacts(const YamlValue& root, RobotYaml& out, ErrorCollector& errors) {
@@ -102,10 +114,11 @@ void read_stand_pose(const YamlValue& root, RobotYaml& out, ErrorCollector& erro
 
 RobotYaml read_robot_yaml(const YamlValue& root, ErrorCollector& errors) {
   root.check_keys_within(
-      {"name",           "urdf",   "root_link",           "fixed_base",    "torso_link",
-       "servo",          "servos", "actuated_joints",     "held_joints",   "universal_joints",
-       "flexible_links", "feet",   "contact_links",       "trimesh_links", "capsule_links",
-       "joint_stops",    "fall",   "initial_clearance_m", "stand_pose",    "parameters"},
+      {"name",           "urdf",      "root_link",       "fixed_base",    "torso_link",
+       "servo",          "servos",    "actuated_joints", "held_joints",   "universal_joints",
+       "flexible_links", "feet",      "contact_links",   "trimesh_links", "capsule_links",
+       "joint_stops",    "ground",    "joint_limits",    "fall",          "initial_clearance_m",
+       "stand_pose",     "parameters"},
       errors);
   RobotYaml out;
   errors.check([&] { read_identity(root, out); });

@@ -41,6 +41,14 @@ struct RobotYaml {
   std::vector<std::string> trimesh_links;
   std::vector<std::string> capsule_links;
   bool joint_stops = true;
+  bool ground = true;
+  struct Limits {
+    std::string joint;
+    double lower = 0.0;
+    double upper = 0.0;
+    YamlValue where;
+  };
+  std::vector<Limits> joint_limits;  // replace the URDF's (rad or m)
   double max_tilt_rad = 1.0;
   double min_torso_height_m = 0.0;
   double initial_clearance_m = 0.001;

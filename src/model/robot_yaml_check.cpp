@@ -166,6 +166,9 @@ void check_robot_yaml(RobotYaml& spec, const UrdfTree& tree, const YamlValue& ro
   checker.check_links("contact_links", spec.contact_links);
   checker.check_links("trimesh_links", spec.trimesh_links);
   checker.check_links("capsule_links", spec.capsule_links);
+  keep_valid(spec.joint_limits, errors, [&](const RobotYaml::Limits& limits) {
+    checker.movable_joint(limits.where, limits.joint);
+  });
   checker.check_universal_pairs();
   checker.check_servos();
 }

@@ -23,6 +23,7 @@ struct MimicCoupling {
   OdeAxis leader;
   double multiplier = 1.0;
   double offset = 0.0;
+  int leader_actuator = -1;  // the actuator driving the leader, or −1 (a passive leader)
 
   // Sets the follower's motor row for the next step of length dt_s.
   void drive(double dt_s) const {

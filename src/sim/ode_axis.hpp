@@ -8,6 +8,9 @@
 
 #include <ode/ode.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "motoflex/model/robot_model.hpp"
 
 namespace motoflex::detail {
@@ -18,10 +21,22 @@ struct OdeAxis {
   bool slider = false;
   int axis = 1;
   double sign = 1.0;
+  // A hinge without stops may turn any number of times, but ODE reports its angle in
+  // (−π, π]: count the turns (read every step, so a jump of more than π is a wrap).
+  bool count_turns = false;
+  mutable double turns = 0.0;
+  mutable double last_raw_rad = 0.0;
 
   double angle_rad() const {  // m for a slider
     if (slider) return sign * dJointGetSliderPosition(joint);
-    if (!universal) return sign * dJointGetHingeAngle(joint);
+    if (!universal) {
+      const double raw = sign * dJointGetHingeAngle(joint);
+      if (!count_turns) return raw;
+      if (raw - last_raw_rad > std::numbers::pi) turns -= 1.0;
+      if (raw - last_raw_rad < -std::numbers::pi) turns += 1.0;
+      last_raw_rad = raw;
+      return raw + 2.0 * std::numbers::pi * turns;
+    }
     return sign * (axis == 1 ? dJointGetUniversalAngle1(joint) : dJointGetUniversalAngle2(joint));
   }
   double rate_rad_s() const {  // m/s for a slider
@@ -29,6 +44,12 @@ struct OdeAxis {
     if (!universal) return sign * dJointGetHingeAngleRate(joint);
     return sign *
            (axis == 1 ? dJointGetUniversalAngle1Rate(joint) : dJointGetUniversalAngle2Rate(joint));
+  }
+  // Starts counting turns from the current pose, which is `angle` (rad).
+  void sync_turns(double angle) const {
+    if (!count_turns) return;
+    last_raw_rad = sign * dJointGetHingeAngle(joint);
+    turns = std::round((angle - last_raw_rad) / (2.0 * std::numbers::pi));
   }
   // Joint motor row: drive the rate toward velocity_rad_s with at most fmax_nm (N for a slider).
   void set_motor(double velocity_rad_s, double fmax_nm) const {
@@ -53,6 +74,7 @@ inline OdeAxis ode_axis(dJointID joint, const JointSpec& spec, int axis) {
   out.universal = spec.kind == JointKind::kUniversal || spec.kind == JointKind::kFlex;
   out.axis = axis;
   out.sign = out.universal ? -1.0 : 1.0;
+  out.count_turns = spec.kind == JointKind::kHinge && !std::isfinite(spec.lower1_rad);
   return out;
 }
 

@@ -19,6 +19,7 @@ bool has_flex_joints(const RobotModel& model) {
 // Only shapes that collide with the ground read the contact parameters: a fixed-base arm
 // whose links may not touch the ground needs none.
 bool touches_ground(const RobotModel& model) {
+  if (!model.ground) return false;
   for (const auto& body : model.bodies) {
     if (body.is_static) continue;
     for (const auto& shape : body.collisions) {

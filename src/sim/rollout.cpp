@@ -116,7 +116,8 @@ struct Rollout::Impl {
   std::vector<JointEncoder> encoders;
   std::vector<double> applied_torque_nm;
   dContact contact_template{};
-  double elapsed_s = 0.0;  // since the rollout was created (settling included)
+  double elapsed_s = 0.0;         // since the rollout was created (settling included)
+  bool step_interrupted = false;  // an ODE error was thrown out of dWorldStep
 
   Impl(const RobotModel& m, const ParameterSet& values, const RolloutOptions& o)
       : model(m),
@@ -127,7 +128,10 @@ struct Rollout::Impl {
 
   ~Impl() {
     if (world != nullptr) dWorldSetStepThreadingImplementation(world, nullptr, nullptr);
-    if (threading != nullptr) dThreadingFreeImplementation(threading);
+    // An ODE assertion inside a step (thrown by our handler; the rollout then ends as
+    // diverged) leaves that step's jobs queued, and freeing the queue would assert again from
+    // inside ODE's destructors: the queue of such a rollout is left allocated.
+    if (threading != nullptr && !step_interrupted) dThreadingFreeImplementation(threading);
     if (ground != nullptr) dGeomDestroy(ground);
     if (contact_group != nullptr) dJointGroupDestroy(contact_group);
     if (world != nullptr) dWorldDestroy(world);  // also destroys bodies and joints
@@ -201,6 +205,8 @@ void Rollout::Impl::build_bodies() {
       dBodySetPosition(body, com.x(), com.y(), com.z());
       bodies[b] = body;
     }
+    // Without a ground there is nothing to collide with or to fall onto.
+    if (!model.ground) continue;
     for (const CollisionShape& shape : spec.collisions) {
       // On a body the offset from the ODE body's position; on the welded base a world pose.
       const Eigen::Vector3d p = shape.X_BG.translation() + spec.com_W0_m -
@@ -374,10 +380,11 @@ void Rollout::Impl::add_mimic_couplings() {
   for (std::size_t j = 0; j < model.joints.size(); ++j) {
     const auto& mimic = model.joints[j].mimic;
     if (!mimic) continue;
+    const JointSpec& leader = model.joints[mimic->leader_joint];
     mimics.push_back({detail::ode_axis(joints[j], model.joints[j], 1),
-                      detail::ode_axis(joints[mimic->leader_joint],
-                                       model.joints[mimic->leader_joint], mimic->leader_axis),
-                      mimic->multiplier, mimic->offset});
+                      detail::ode_axis(joints[mimic->leader_joint], leader, mimic->leader_axis),
+                      mimic->multiplier, mimic->offset,
+                      mimic->leader_axis == 1 ? leader.actuator1 : leader.actuator2});
   }
 }
 
@@ -409,6 +416,13 @@ void Rollout::Impl::place(const std::vector<double>& pose_rad) {
     dBodySetRotation(bodies[b], R);
     dBodySetLinearVel(bodies[b], 0.0, 0.0, 0.0);
     dBodySetAngularVel(bodies[b], 0.0, 0.0, 0.0);
+  }
+  for (std::size_t i = 0; i < axes.size(); ++i) axes[i].sync_turns(pose_rad[i]);
+  for (auto& mimic : mimics) {
+    // A passive leader starts at its build position, 0.
+    const double leader = mimic.leader_actuator >= 0 ? pose_rad[mimic.leader_actuator] : 0.0;
+    mimic.leader.sync_turns(leader);
+    mimic.follower.sync_turns(mimic.multiplier * leader + mimic.offset);
   }
   for (std::size_t i = 0; i < encoders.size(); ++i) encoders[i].reset(encoder_input(i));
   // A held torso is a kinematic body: it does not move, and the joints act on it as on an
@@ -574,8 +588,11 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
     for (const auto& mimic : s.mimics) mimic.drive(s.options.dt_s);
     s.apply_flex_springs();
     s.collide_feet();
+    // Our ODE error handler throws: an error inside the step interrupts it (see ~Impl).
+    s.step_interrupted = true;
     const int ok = s.options.solver == StepSolver::kStep ? dWorldStep(s.world, s.options.dt_s)
                                                          : dWorldQuickStep(s.world, s.options.dt_s);
+    s.step_interrupted = false;
     s.read_foot_forces();
     dJointGroupEmpty(s.contact_group);
     if (!ok) throw ModelError("ODE ran out of memory in the step");

@@ -41,7 +41,7 @@ enum class JointKind {
 };
 
 // A URDF <mimic> follower: its position is held at multiplier·q_leader + offset by a stiff
-// implicit coupling (the follower has no actuator of its own).
+// implicit coupling (the follower has no actuator and no stops of its own).
 struct MimicSpec {
   int leader_joint = -1;  // index into RobotModel::joints
   int leader_axis = 1;    // 1 or 2 (a leader merged into a universal joint)
@@ -112,6 +112,8 @@ struct RobotModel {
   double min_torso_height_m = 0.0;
   double initial_clearance_m = 0.001;
   bool joint_stops = true;  // URDF limits are ODE stops (robot.yaml joint_stops)
+  // false: no ground plane (a robot mounted on a stand or table): nothing touches, nothing falls.
+  bool ground = true;
   std::map<std::string, double> stand_pose_rad;  // actuated joint → angle (missing: 0)
 
   ParameterRegistry parameters;
