@@ -180,6 +180,9 @@ def make_tests(out):
     write_stl_ascii(os.path.join(out, "cube_mm_ascii.stl"), scaled(v, 1000.0), t)
     v, t = cone(0.05, 0.08)
     write_stl_binary(os.path.join(out, "cone.stl"), v, t)
+    # The cone in millimetres with its apex up +z, declared Z_UP: read as the URDF means it,
+    # the apex stays on +z (converting to Y up would lay it along y).
+    write_dae(os.path.join(out, "cone_in_mm.dae"), scaled(v, 1000.0), t, 0.001, "Z_UP")
     v, t = icosphere(0.05, 3)  # 642 vertices
     write_stl_binary(os.path.join(out, "icosphere_642.stl"), v, t)
     v, t = u_block(0.12, 0.06, 0.06, 0.02)

@@ -14,9 +14,10 @@ TriangleMesh load_mesh_file(const std::string& path, const Eigen::Vector3d& scal
   // URDF meshes live in their link's frame; COLLADA's up axis would rotate them (ROS's own
   // loaders ignore it too). Its <unit meter> is kept: it is how CAD exports say millimetres.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  // Normals are not needed, and per-face normals would keep a cube's shared corners apart.
   const aiScene* scene =
       importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                  aiProcess_PreTransformVertices);
+                                  aiProcess_PreTransformVertices | aiProcess_DropNormals);
   if (scene == nullptr) {
     throw InputError(path, 0, "", std::string("cannot read mesh: ") + importer.GetErrorString());
   }

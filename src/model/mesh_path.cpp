@@ -54,7 +54,8 @@ std::string resolve_mesh_path(const std::string& uri, const std::string& urdf_pa
     return find_in_ancestors(rest.substr(0, slash), fs::path(rest.substr(slash + 1)), urdf_folder);
   }
   const fs::path path(uri.rfind(file_scheme, 0) == 0 ? uri.substr(file_scheme.size()) : uri);
-  const fs::path full = path.is_absolute() ? path : urdf_folder / path;
+  // Normalised first: the OS cannot walk `urdf/..` when the URDF's folder does not exist.
+  const fs::path full = (path.is_absolute() ? path : urdf_folder / path).lexically_normal();
   return is_file(full) ? absolute_normal(full) : std::string();
 }
 

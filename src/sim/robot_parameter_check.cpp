@@ -32,13 +32,19 @@ void collect_missing(const RobotModel& model, const std::string& servo, ErrorCol
     if (model.parameters.contains(name) || !reported.insert(name).second) return;
     errors.add(source, line, field, "missing '" + name + "', required by " + who + advice);
   };
+  // Joints whose law is unknown (reported on its own) are skipped, the others still checked.
+  bool point_mass_arm = false;
   for (std::size_t a = 0; a < model.actuators.size(); ++a) {
-    const ServoLawInfo& law = servo_law(actuator_servo_name(model, servo, a));
-    for (const auto& name : law.parameter_names(model, a)) {
-      report(name, "servo '" + law.name + "'");
+    const ServoLawInfo* law = find_servo_law(actuator_servo_name(model, servo, a));
+    if (law == nullptr) continue;
+    if (a == 0) point_mass_arm = law->point_mass_arm;
+    for (const auto& name : law->parameter_names(model, a)) {
+      report(name, "servo '" + law->name + "'");
     }
   }
-  for (const auto& name : rollout_parameter_names(model, servo)) report(name, "the rollout");
+  for (const auto& name : detail::rollout_wide_parameter_names(model, point_mass_arm)) {
+    report(name, "the rollout");
+  }
 }
 
 // Where robot.yaml assigns an actuator's law: its `servos:` entry, or `servo:`.
@@ -133,9 +139,8 @@ void check_robot_parameters(const RobotModel& model, ErrorCollector& errors, boo
     errors.add(file, line, "parameters." + name,
                "unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
   }
-  if (collect_unknown_laws(model, "", errors)) {
-    collect_missing(model, "", errors, file, model.source.parameters_line, "parameters", "");
-  }
+  collect_unknown_laws(model, "", errors);
+  collect_missing(model, "", errors, file, model.source.parameters_line, "parameters", "");
 }
 
 void check_robot_parameters(const RobotModel& model) {

@@ -8,7 +8,8 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
           ActuatorExport& a) {
   a.kv_nm_s_per_rad = detail::stiff_servo_kv_nm_s_per_rad(input, actuator);
   a.kp_nm_per_rad = a.kv_nm_s_per_rad / input.dt_s;
-  a.effort_nm = get("ideal.torque_max_nm");
+  a.effort_nm =
+      get(input.model.actuators[actuator].prismatic ? "ideal.force_max_n" : "ideal.torque_max_nm");
 }
 
 }  // namespace

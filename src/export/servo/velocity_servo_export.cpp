@@ -6,10 +6,11 @@ namespace {
 
 void fill(const ExportInput& input, std::size_t actuator, const ParameterReader& get,
           ActuatorExport& a) {
-  const std::string joint = "joint." + input.model.actuators[actuator].name + ".";
+  const ActuatorSpec& spec = input.model.actuators[actuator];
+  const std::string joint = "joint." + spec.name + ".";
   a.kv_nm_s_per_rad = detail::stiff_servo_kv_nm_s_per_rad(input, actuator);
   a.kp_nm_per_rad = a.kv_nm_s_per_rad * get(joint + "gain_per_s");
-  a.effort_nm = get(joint + "torque_max_nm");
+  a.effort_nm = get(joint + (spec.prismatic ? "force_max_n" : "torque_max_nm"));  // N on a slider
 }
 
 }  // namespace
