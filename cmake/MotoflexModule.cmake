@@ -7,7 +7,7 @@
 
 file(STRINGS ${CMAKE_CURRENT_LIST_DIR}/module_layers.txt _motoflex_layer_lines REGEX "^[0-9]")
 foreach(_line IN LISTS _motoflex_layer_lines)
-  string(REGEX MATCH "^([0-9]+)[ \t]+([a-z_]+)" _ "${_line}")
+  string(REGEX MATCH "^([0-9]+)[ \t]+([a-z0-9_]+)" _ "${_line}")
   set(MOTOFLEX_LAYER_${CMAKE_MATCH_2} ${CMAKE_MATCH_1})
 endforeach()
 

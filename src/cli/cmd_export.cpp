@@ -15,13 +15,10 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/error.hpp"
-#include "motoflex/export/json_export.hpp"
-#include "motoflex/export/mjcf_export.hpp"
+#include "motoflex/export/exporter.hpp"
 #include "motoflex/export/mujoco_check.hpp"
-#include "motoflex/export/parser_check.hpp"
-#include "motoflex/export/sdf_export.hpp"
-#include "motoflex/export/urdf_export.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/motion/log_commands.hpp"
 #include "motoflex/sim/robot_parameter_check.hpp"
@@ -67,20 +64,40 @@ nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
           {"motoflex_end", c.motoflex_end}};
 }
 
-int run(const ExportArgs& args) {
-  if (args.format != "json" && args.format != "urdf" && args.format != "sdf" &&
-      args.format != "mjcf") {
-    throw InputError("", 0, "--format", "expected json, urdf, sdf or mjcf");
+const Exporter& check_arguments(const ExportArgs& args) {
+  const Exporter* exporter = find_exporter(args.format);
+  if (exporter == nullptr) {
+    throw InputError("", 0, "--format", "expected one of " + exporter_formats());
   }
   if (!args.check_log.empty() && args.format != "mjcf") {
     throw InputError("", 0, "--check-mujoco", "needs --format mjcf");
   }
-  if (!(args.dt_s > 0.0 && args.dt_s <= 0.01))
+  if (!(args.dt_s > 0.0 && args.dt_s <= 0.01)) {
     throw InputError("", 0, "--dt", "must be in (0, 0.01] s");
-  if (args.settle_s < 0.0) throw InputError("", 0, "--settle", "must be >= 0");
+  }
+  if (!(args.settle_s >= 0.0)) throw InputError("", 0, "--settle", "must be >= 0");
+  if (!(args.duration_s >= 0.0)) throw InputError("", 0, "--duration", "must be >= 0");
   if (!std::filesystem::exists(std::filesystem::path(args.robot) / "robot.yaml")) {
     throw InputError(args.robot, 0, "--robot", "no robot.yaml in this folder");
   }
+  return *exporter;
+}
+
+// Writes the file (atomically) and returns what its parser complained about ("" = accepted).
+std::string write_checked_file(const Exporter& exporter, const ExportInput& input,
+                               const ExportArgs& args) {
+  ExportOptions options;
+  options.armature = !args.no_armature;
+  const std::string text = exporter.write(input, options);
+  const std::string complaint = exporter.read_back_errors(text);
+  const std::filesystem::path out_dir = std::filesystem::path(args.out).parent_path();
+  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
+  write_file_atomically(args.out, text);
+  return complaint;
+}
+
+int run(const ExportArgs& args) {
+  const Exporter& exporter = check_arguments(args);
   StructureOptions structure;
   structure.flex_sub_bodies = args.flex_sub_bodies;
   const RobotModel model = load_robot(args.robot, structure);
@@ -101,38 +118,16 @@ int run(const ExportArgs& args) {
         read_commands(model, args.check_log, args.duration_s, input.parameters, log_parameters);
   }
 
-  std::string text;
   std::string parser_complaint;
   try {
-    if (args.format == "json") {
-      text = export_json(input);
-      if (!nlohmann::json::accept(text)) parser_complaint = "not valid JSON";
-    } else if (args.format == "urdf") {
-      text = export_urdf(input);
-      parser_complaint = urdfdom_errors(text);
-    } else if (args.format == "sdf") {
-      text = export_sdf(input);
-      parser_complaint = sdformat_errors(text);
-    } else {
-      MjcfOptions mjcf;
-      mjcf.armature = !args.no_armature;
-      text = export_mjcf(input, mjcf);
-      parser_complaint = mujoco_errors(text);
-    }
+    parser_complaint = write_checked_file(exporter, input, args);
   } catch (const ModelError& error) {
     std::fprintf(stderr, "motoflex: cannot export: %s\n", error.what());
     return 1;
   }
-  const std::filesystem::path out_dir = std::filesystem::path(args.out).parent_path();
-  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
-  {
-    std::ofstream out(args.out, std::ios::binary);
-    out << text;
-    if (!out) throw InputError(args.out, 0, "--out", "cannot write the file");
-  }
   if (!parser_complaint.empty()) {
     std::fprintf(stderr, "motoflex: %s rejects the %s export %s: %s\n",
-                 parser_name(args.format).c_str(), args.format.c_str(), args.out.c_str(),
+                 exporter.reader_name().c_str(), args.format.c_str(), args.out.c_str(),
                  parser_complaint.c_str());
     return 1;
   }
@@ -143,7 +138,7 @@ int run(const ExportArgs& args) {
   summary["robot"] = model.name;
   summary["servo"] = servo;
   summary["parameters"] = args.parameters;
-  summary["read_back_by"] = args.format == "json" ? "nlohmann::json" : parser_name(args.format);
+  summary["read_back_by"] = exporter.reader_name();
   if (!log_parameters.empty()) summary["log_parameters"] = log_parameters;
   if (!args.check_log.empty()) {
     MujocoCheckOptions options;
@@ -176,7 +171,7 @@ CommandRunner add_export_command(CLI::App& app) {
   sub->add_option("parameters", args->parameters, "best.json of a fit, or a parameter JSON")
       ->required();
   sub->add_option("--robot", args->robot, "robot folder (robot.yaml + URDF)")->required();
-  sub->add_option("--format", args->format, "json | urdf | sdf | mjcf")->required();
+  sub->add_option("--format", args->format, exporter_formats())->required();
   sub->add_option("--out", args->out, "output file")->required();
   sub->add_option("--servo", args->servo,
                   "servo law the parameters belong to (default: the robot's)");

@@ -13,7 +13,7 @@
 #include "fit_on_ranks.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/fit/fit_config.hpp"
-#include "motoflex/fit/fit_runner.hpp"
+#include "motoflex/fit/fit_session.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -52,27 +52,10 @@ int run_fit_command(const FitArgs& args) {
   return run_fit_on_ranks([&] { return load_fit_config(args.target, overrides); }, false);
 }
 
-FitConfig load_resumed_config(const FitArgs& args) {
-  const std::filesystem::path run_json = std::filesystem::path(args.target) / "run.json";
-  std::ifstream in(run_json);
-  if (!in) throw InputError(run_json.string(), 0, "", "not a fit run folder (no run.json)");
-  nlohmann::json run;
-  try {
-    in >> run;
-  } catch (const nlohmann::json::exception& error) {
-    throw InputError(run_json.string(), 0, "", std::string("corrupt: ") + error.what());
-  }
-  if (!run.contains("fit") || !run["fit"].is_string()) {
-    throw InputError(run_json.string(), 0, "fit", "missing");
-  }
-  FitOverrides overrides = overrides_from_json(run.value("overrides", nlohmann::json::object()));
-  apply_budget(args, overrides);  // threads and budget may change on resume
-  overrides.out = std::filesystem::absolute(args.target).lexically_normal().string();
-  return load_fit_config(run["fit"].get<std::string>(), overrides);
-}
-
 int run_resume_command(const FitArgs& args) {
-  return run_fit_on_ranks([&] { return load_resumed_config(args); }, true);
+  FitOverrides overrides;
+  apply_budget(args, overrides);  // threads and budget may change on resume
+  return run_fit_on_ranks([&] { return load_run_config(args.target, overrides); }, true);
 }
 
 }  // namespace

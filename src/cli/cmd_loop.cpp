@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "motoflex/effects/effect_loop.hpp"
+#include "report_after_run.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -38,6 +39,13 @@ int run_loop_command(const LoopArgs& args) {
   std::printf("; %llu evaluations, %.1f s; see %s/report.md\n",
               static_cast<unsigned long long>(result.evaluations), result.wall_seconds,
               result.out_dir.c_str());
+  // Every fit of the loop is an ordinary run dir and gets its own page; the loop's page shows
+  // the before/after and the final model's fit.
+  write_report_after_run(result.base_run_dir);
+  for (const auto& iteration : result.iterations) {
+    for (const auto& refit : iteration.refits) write_report_after_run(refit.run_dir);
+  }
+  write_report_after_run(result.out_dir);
   return 0;
 }
 

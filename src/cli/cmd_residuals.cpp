@@ -10,6 +10,7 @@
 #include "motoflex/effects/loop_report.hpp"
 #include "motoflex/fit/fit_run.hpp"
 #include "motoflex/model/effect_library.hpp"
+#include "report_after_run.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -36,6 +37,8 @@ int run_residuals(const ResidualsArgs& args) {
     std::printf("  %zu. %-18s explains %5.1f %%  dBIC %.4g\n", ++rank, s.effect.c_str(),
                 100.0 * s.explained, s.delta_bic);
   }
+  // The run's HTML report shows the analysis written into the run dir: refresh it.
+  if (args.out.empty()) write_report_after_run(args.run_dir);
   return 0;
 }
 

@@ -1,6 +1,9 @@
-// motoflex simulate <scenario.yaml> [--params P.json] [--motion LOG.csv] --out OUT.csv [--plot PNG]
-// Replays the commanded angles of a scenario (or of any log) and writes a log whose .meas
-// columns are the simulated encoders.
+// motoflex simulate <scenario.yaml|truth.yaml> [--params P.json] [--motion LOG.csv]
+//                   [--recording NAME] --out OUT.csv [--plot PNG]
+// Replays the commanded angles of a scenario (or of any log, or of a 2011 MoToFlex command file)
+// and writes a log whose .meas columns are the simulated encoders. A truth file (the input of
+// `record`) simulates one of its recordings (the first, or --recording) exactly as `record`
+// does: same scenario, truth parameters, sensor seed.
 
 #include <chrono>
 #include <cmath>
@@ -14,6 +17,7 @@
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/io/plot_script.hpp"
 #include "motoflex/scenario/scenario.hpp"
+#include "motoflex/scenario/truth_file.hpp"
 #include "motoflex/sim/rollout_log.hpp"
 
 namespace motoflex::cli {
@@ -23,6 +27,7 @@ struct SimulateArgs {
   std::string scenario;
   std::string params;
   std::string motion;
+  std::string recording;
   std::string out;
   std::string plot;
   std::string solver;
@@ -48,7 +53,7 @@ int run(const SimulateArgs& args) {
     if (!overrides.solver) throw InputError("", 0, "--solver", "expected 'step' or 'quick'");
   }
   if (args.duration_s > 0.0) overrides.duration_s = args.duration_s;
-  const Scenario scenario = load_scenario(args.scenario, overrides);
+  const Scenario scenario = load_scenario_or_truth(args.scenario, overrides, args.recording);
 
   const auto start = std::chrono::steady_clock::now();
   const RolloutResult result =
@@ -97,9 +102,13 @@ int run(const SimulateArgs& args) {
 CommandRunner add_simulate_command(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* sub = app.add_subcommand("simulate", "replay commanded angles, write simulated log");
-  sub->add_option("scenario", args->scenario, "scenario YAML")->required();
+  sub->add_option("scenario", args->scenario, "scenario YAML, or a truth YAML (as for record)")
+      ->required();
   sub->add_option("--params", args->params, "parameter set JSON (name -> value)");
-  sub->add_option("--motion", args->motion, "replay the .cmd columns of this log instead");
+  sub->add_option("--motion", args->motion,
+                  "replay the .cmd columns of this log (or a 2011 MoToFlex command file) instead");
+  sub->add_option("--recording", args->recording,
+                  "a truth file's recording to simulate (default: its first)");
   sub->add_option("--out", args->out, "output log CSV (a sidecar YAML is written beside it)")
       ->required();
   sub->add_option("--plot", args->plot, "also draw commanded vs simulated angles into this PNG");

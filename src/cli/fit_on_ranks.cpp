@@ -7,9 +7,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "motoflex/fit/fit_runner.hpp"
+#include "fit_console.hpp"
+#include "motoflex/fit/fit_problem.hpp"
 #include "motoflex_es/mpi_evaluator.hpp"
 #include "motoflex_es/mpi_world.hpp"
+#include "report_after_run.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -67,7 +69,13 @@ std::optional<FitConfig> load_on_every_rank(const motoflex_es::MpiWorld& world,
 
 int run_fit_on_ranks(const std::function<FitConfig()>& load_config, bool resume) {
   const int launched = motoflex_es::launcher_process_count();
-  if (launched <= 1) return run_fit(load_config(), resume);
+  if (launched <= 1) {
+    FitConfig config = load_config();
+    const std::string out_dir = config.out_dir;
+    const int code = run_fit_on_console(std::move(config), resume);
+    write_report_after_run(out_dir);
+    return code;
+  }
   if (!motoflex_es::mpi_built_in()) {
     throw std::runtime_error("started as one of " + std::to_string(launched) +
                              " MPI processes, but this build has no MPI support (reconfigure "
@@ -91,10 +99,15 @@ int run_fit_on_ranks(const std::function<FitConfig()>& load_config, bool resume)
     motoflex_es::serve_mpi_evaluations(world, problem, config->threads);
     return 0;
   }
-  // The evaluator's destructor releases the workers, also when run_fit throws.
-  motoflex_es::MpiEvaluator evaluator(world, config->threads);
-  std::printf("evaluating on %s\n", evaluator.name().c_str());
-  return run_fit(*config, resume, &evaluator);
+  int code = 0;
+  {
+    // The evaluator's destructor releases the workers, also when the fit throws.
+    motoflex_es::MpiEvaluator evaluator(world, config->threads);
+    std::printf("evaluating on %s\n", evaluator.name().c_str());
+    code = run_fit_on_console(*config, resume, &evaluator);
+  }
+  write_report_after_run(config->out_dir);  // rank 0 alone writes the run dir
+  return code;
 }
 
 }  // namespace motoflex::cli

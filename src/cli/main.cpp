@@ -23,12 +23,15 @@ int main(int argc, char** argv) {
   runners["fit"] = motoflex::cli::add_fit_command(app);
   runners["resume"] = motoflex::cli::add_resume_command(app);
   runners["import-bam"] = motoflex::cli::add_import_bam_command(app);
+  runners["import-motoflex"] = motoflex::cli::add_import_motoflex_command(app);
+  runners["experiment"] = motoflex::cli::add_experiment_command(app);
   runners["titan"] = motoflex::cli::add_titan_command(app);
   runners["export"] = motoflex::cli::add_export_command(app);
   runners["residuals"] = motoflex::cli::add_residuals_command(app);
   runners["loop"] = motoflex::cli::add_loop_command(app);
   runners["init-robot"] = motoflex::cli::add_init_robot_command(app);
   runners["check-robot"] = motoflex::cli::add_check_robot_command(app);
+  runners["report"] = motoflex::cli::add_report_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -8,11 +8,11 @@
 #include <set>
 
 #include "motoflex/core/error.hpp"
-#include "motoflex/model/effect_library.hpp"
+#include "motoflex/effects/loop_report.hpp"
 #include "motoflex/fit/effect_parameters.hpp"
 #include "motoflex/fit/fit_run.hpp"
-#include "motoflex/effects/loop_report.hpp"
 #include "motoflex/fit/refit_config.hpp"
+#include "motoflex/model/effect_library.hpp"
 
 namespace motoflex {
 namespace {
@@ -34,7 +34,8 @@ std::string iteration_dir(const fs::path& out, std::size_t iteration, const std:
 // The effects a fit already models: those it lists and those whose parameters it all frees.
 std::vector<std::string> modelled_effects(const FitConfig& config) {
   std::set<std::string> free_names;
-  for (const auto& p : config.free) free_names.insert(p.targets.begin(), p.targets.end());
+  for (const auto& p : config.free_parameters)
+    free_names.insert(p.targets.begin(), p.targets.end());
   std::vector<std::string> out;
   for (const Effect& effect : effect_library()) {
     const bool listed = std::find(config.effects.begin(), config.effects.end(), effect.name) !=
@@ -88,6 +89,127 @@ std::string write_refit(const Evaluated& current, const EffectScore& candidate,
   return write_refit_config(current.fit.config, linearised, effect, candidate.estimate, dir);
 }
 
+void account(LoopResult& result, const FinishedFit& fit) {
+  result.evaluations += fit.summary.value("evaluations", std::uint64_t{0});
+  result.fit_seconds += fit.summary.value("seconds", 0.0);
+}
+
+// Ranks the library's effects on the current fit's residual (step.ranking).
+void rank_iteration(const Evaluated& current, const LoopOptions& options, std::size_t iteration,
+                    LoopIteration& step, LoopResult& result) {
+  const auto ranking_start = std::chrono::steady_clock::now();
+  step.ranking = rank_effects(current.fit.config, current.fit.best, options.effects,
+                              current.fit.config.threads);
+  step.ranking_seconds = seconds_since(ranking_start);
+  std::size_t probes = step.ranking.jacobian_rollouts;
+  for (const auto& score : step.ranking.scores) probes += score.scored() ? 1 : 0;
+  result.probe_rollouts += probes * current.fit.config.train->cases().size();
+  std::printf("loop: iteration %zu ranking (%.1f s):", iteration, step.ranking_seconds);
+  for (const auto& score : step.ranking.scores) {
+    if (score.scored()) std::printf(" %s %.3g", score.effect.c_str(), score.delta_bic);
+  }
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+// The ranking orders; the refit on validation logs decides. (ΔBIC over N_eff is a conservative
+// screen: on a smooth real residual it can leave no effect "supported".)
+std::vector<const EffectScore*> refit_candidates(const EffectRanking& ranking,
+                                                 const LoopOptions& options) {
+  std::vector<const EffectScore*> candidates;
+  for (const auto& score : ranking.scores) {
+    if (score.scored() && score.explained > kMinExplained &&
+        candidates.size() < options.candidates) {
+      candidates.push_back(&score);
+    }
+  }
+  return candidates;
+}
+
+// Refits the current model with one candidate effect and judges it on the validation logs.
+LoopRefit refit_with(const Evaluated& current, const EffectScore& candidate, const std::string& dir,
+                     const LoopOptions& options, LoopResult& result,
+                     std::vector<Evaluated>& refits) {
+  const std::string yaml = write_refit(current, candidate, dir, &result.probe_rollouts);
+  std::printf("loop: refit with %s -> %s\n", candidate.effect.c_str(), dir.c_str());
+  std::fflush(stdout);
+  FitConfig config = load_fit_config(yaml);
+  config.loop = options;
+  config.threads = current.fit.config.threads;
+  refits.push_back(evaluate(ensure_fit(config)));
+  const Evaluated& refit = refits.back();
+  account(result, refit.fit);
+  LoopRefit row;
+  row.effect = candidate.effect;
+  row.run_dir = dir;
+  row.train_rms_deg = refit.train.rms_deg;
+  row.val_rms_deg = refit.validation.rms_deg;
+  row.val_mae_rad = refit.validation.mae_rad;
+  row.val_imu_rms_deg = imu_rms_deg(refit.validation);
+  row.val_bic = refit.validation.bic;
+  row.free_parameters = refit.fit.config.space->dimension();
+  row.evaluations = refit.fit.summary.value("evaluations", std::uint64_t{0});
+  row.seconds = refit.fit.summary.value("seconds", 0.0);
+  // The gain is measured as the fit measures its error: on the joints (with their weights),
+  // and on the IMU too when the fitness scores it.
+  row.significant = refit.validation.channel_rms_rad <=
+                        (1.0 - options.min_gain) * current.validation.channel_rms_rad &&
+                    refit.validation.bic < current.validation.bic;
+  std::printf("loop:   %s: validation RMS %.4g -> %.4g deg (%s)\n", row.effect.c_str(),
+              current.validation.rms_deg, row.val_rms_deg,
+              row.significant ? "significant" : "not significant");
+  std::fflush(stdout);
+  return row;
+}
+
+void record_errors_after(const Evaluated& model, LoopIteration& step) {
+  step.fitted = model.fit.best_json["free"];
+  step.train_rms_after_deg = model.train.rms_deg;
+  step.val_rms_after_deg = model.validation.rms_deg;
+  step.val_mae_after_rad = model.validation.mae_rad;
+  step.val_imu_rms_after_deg = imu_rms_deg(model.validation);
+}
+
+// One iteration: rank, refit the top candidates, keep the best significant one. Returns false
+// when nothing was added (the loop stops).
+bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions& options,
+                   Evaluated& current, std::vector<std::string>& model, LoopResult& result) {
+  LoopIteration step;
+  step.model_run_dir = current.fit.config.out_dir;
+  step.train_rms_before_deg = current.train.rms_deg;
+  step.val_rms_before_deg = current.validation.rms_deg;
+  step.val_mae_before_rad = current.validation.mae_rad;
+  step.val_imu_rms_before_deg = imu_rms_deg(current.validation);
+  rank_iteration(current, options, iteration, step, result);
+  std::optional<std::size_t> winner;  // index into refits
+  std::vector<Evaluated> refits;
+  const std::vector<const EffectScore*> candidates = refit_candidates(step.ranking, options);
+  refits.reserve(candidates.size());
+  for (const EffectScore* candidate : candidates) {
+    const std::string dir = iteration_dir(out, iteration, candidate->effect);
+    step.refits.push_back(refit_with(current, *candidate, dir, options, result, refits));
+    if (step.refits.back().significant &&
+        (!winner || refits.back().validation.bic < refits[*winner].validation.bic)) {
+      winner = refits.size() - 1;
+    }
+  }
+  if (!winner) {
+    record_errors_after(current, step);
+    result.iterations.push_back(std::move(step));
+    std::printf("loop: no candidate improves the validation error significantly; stop\n");
+    return false;
+  }
+  step.added_effect = step.refits[*winner].effect;
+  model.push_back(step.added_effect);
+  Evaluated& best = refits[*winner];
+  record_errors_after(best, step);
+  std::printf("loop: added %s\n", step.added_effect.c_str());
+  result.iterations.push_back(std::move(step));
+  best.fit.config.loop = options;
+  current = std::move(best);
+  return true;
+}
+
 }  // namespace
 
 LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) {
@@ -112,103 +234,9 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) 
   result.base_run_dir = current.fit.config.out_dir;
   result.base_model = modelled_effects(current.fit.config);
   std::vector<std::string> model = result.base_model;
-  auto account = [&result](const FinishedFit& fit) {
-    result.evaluations += fit.summary.value("evaluations", std::uint64_t{0});
-    result.fit_seconds += fit.summary.value("seconds", 0.0);
-  };
-  account(current.fit);
-
+  account(result, current.fit);
   for (std::size_t iteration = 1; iteration <= options.max_iterations; ++iteration) {
-    LoopIteration step;
-    step.model_run_dir = current.fit.config.out_dir;
-    step.train_rms_before_deg = current.train.rms_deg;
-    step.val_rms_before_deg = current.validation.rms_deg;
-    step.val_mae_before_rad = current.validation.mae_rad;
-    step.val_imu_rms_before_deg = imu_rms_deg(current.validation);
-    const auto ranking_start = std::chrono::steady_clock::now();
-    step.ranking = rank_effects(current.fit.config, current.fit.best, options.effects,
-                                current.fit.config.threads);
-    step.ranking_seconds = seconds_since(ranking_start);
-    std::size_t probes = step.ranking.jacobian_rollouts;
-    for (const auto& score : step.ranking.scores) probes += score.scored() ? 1 : 0;
-    result.probe_rollouts += probes * current.fit.config.train->cases().size();
-    std::printf("loop: iteration %zu ranking (%.1f s):", iteration, step.ranking_seconds);
-    for (const auto& score : step.ranking.scores) {
-      if (score.scored()) std::printf(" %s %.3g", score.effect.c_str(), score.delta_bic);
-    }
-    std::printf("\n");
-    std::fflush(stdout);
-
-    std::vector<const EffectScore*> candidates;
-    for (const auto& score : step.ranking.scores) {
-      // The ranking orders; the refit on validation logs decides. (ΔBIC over N_eff is a
-      // conservative screen: on a smooth real residual it can leave no effect "supported".)
-      if (score.scored() && score.explained > kMinExplained &&
-          candidates.size() < options.candidates) {
-        candidates.push_back(&score);
-      }
-    }
-    std::optional<std::size_t> winner;  // index into refits
-    std::vector<Evaluated> refits;
-    refits.reserve(candidates.size());
-    for (const EffectScore* candidate : candidates) {
-      const std::string dir = iteration_dir(out, iteration, candidate->effect);
-      const std::string yaml = write_refit(current, *candidate, dir, &result.probe_rollouts);
-      std::printf("loop: refit with %s -> %s\n", candidate->effect.c_str(), dir.c_str());
-      std::fflush(stdout);
-      FitConfig config = load_fit_config(yaml);
-      config.loop = options;
-      config.threads = current.fit.config.threads;
-      refits.push_back(evaluate(ensure_fit(config)));
-      const Evaluated& refit = refits.back();
-      account(refit.fit);
-      LoopRefit row;
-      row.effect = candidate->effect;
-      row.run_dir = dir;
-      row.train_rms_deg = refit.train.rms_deg;
-      row.val_rms_deg = refit.validation.rms_deg;
-      row.val_mae_rad = refit.validation.mae_rad;
-      row.val_imu_rms_deg = imu_rms_deg(refit.validation);
-      row.val_bic = refit.validation.bic;
-      row.free_parameters = refit.fit.config.space->dimension();
-      row.evaluations = refit.fit.summary.value("evaluations", std::uint64_t{0});
-      row.seconds = refit.fit.summary.value("seconds", 0.0);
-      // The gain is measured as the fit measures its error: on the joints (with their
-      // weights), and on the IMU too when the fitness scores it.
-      row.significant = refit.validation.channel_rms_rad <=
-                            (1.0 - options.min_gain) * current.validation.channel_rms_rad &&
-                        refit.validation.bic < current.validation.bic;
-      std::printf("loop:   %s: validation RMS %.4g -> %.4g deg (%s)\n", row.effect.c_str(),
-                  current.validation.rms_deg, row.val_rms_deg,
-                  row.significant ? "significant" : "not significant");
-      std::fflush(stdout);
-      if (row.significant && (!winner || refit.validation.bic < refits[*winner].validation.bic)) {
-        winner = refits.size() - 1;
-      }
-      step.refits.push_back(row);
-    }
-    if (!winner) {
-      step.fitted = current.fit.best_json["free"];
-      step.train_rms_after_deg = current.train.rms_deg;
-      step.val_rms_after_deg = current.validation.rms_deg;
-      step.val_mae_after_rad = current.validation.mae_rad;
-      step.val_imu_rms_after_deg = step.val_imu_rms_before_deg;
-      result.iterations.push_back(std::move(step));
-      std::printf("loop: no candidate improves the validation error significantly; stop\n");
-      break;
-    }
-    step.added_effect = step.refits[*winner].effect;
-    model.push_back(step.added_effect);
-    Evaluated& best = refits[*winner];
-    step.fitted = best.fit.best_json["free"];
-    step.train_rms_after_deg = best.train.rms_deg;
-    step.val_rms_after_deg = best.validation.rms_deg;
-    step.val_mae_after_rad = best.validation.mae_rad;
-    step.val_imu_rms_after_deg = imu_rms_deg(best.validation);
-    std::printf("loop: added %s\n", step.added_effect.c_str());
-    result.iterations.push_back(std::move(step));
-    best.fit.config.loop = options;
-    current = std::move(best);
+    if (!run_iteration(iteration, out, options, current, model, result)) break;
   }
   result.final_model = model;
   result.final_run_dir = current.fit.config.out_dir;

@@ -386,7 +386,7 @@ EffectRanking rank_effects(const FitConfig& config, const ParameterSet& current,
     for (const std::string& name : candidates) effects.push_back(&find_effect(name));
   }
   std::set<std::string> free_names;
-  for (const auto& p : config.free) free_names.insert(p.targets.begin(), p.targets.end());
+  for (const auto& p : config.free_parameters) free_names.insert(p.targets.begin(), p.targets.end());
 
   EffectRanking ranking;
   const Residual residual = residual_of(train, current);

@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <sstream>
 
-#include "motoflex/model/effect_library.hpp"
-#include "motoflex/fit/fit_run.hpp"
 #include "motoflex/core/atomic_file.hpp"
+#include "motoflex/fit/fit_run.hpp"
 #include "motoflex/io/plot_script.hpp"
+#include "motoflex/model/effect_library.hpp"
 
 namespace motoflex {
 namespace {
@@ -124,57 +124,60 @@ void write_residual_report(const std::string& dir_text, const FitConfig& config,
   run_plot_script("plot_residuals.py", {dir.string()});
 }
 
-void write_loop_outputs(const LoopResult& result, const FitConfig& user) {
-  const fs::path dir(result.out_dir);
+namespace {
+
+nlohmann::ordered_json iteration_json(const LoopIteration& it) {
+  nlohmann::ordered_json item;
+  nlohmann::ordered_json ranking = nlohmann::ordered_json::array();
+  for (const EffectScore& s : it.ranking.scores) {
+    if (s.scored())
+      ranking.push_back({{"effect", s.effect}, {"score", s.explained}, {"delta_bic", s.delta_bic}});
+  }
+  item["ranking"] = ranking;
+  item["ranking_detail"] = ranking_json(it.ranking);
+  item["added_effect"] = it.added_effect.empty() ? nlohmann::ordered_json(nullptr)
+                                                 : nlohmann::ordered_json(it.added_effect);
+  item["fitted"] = it.fitted;
+  item["train_rms_before"] = it.train_rms_before_deg;
+  item["train_rms_after"] = it.train_rms_after_deg;
+  item["val_rms_before"] = it.val_rms_before_deg;
+  item["val_rms_after"] = it.val_rms_after_deg;
+  item["val_mae_before_rad"] = it.val_mae_before_rad;
+  item["val_mae_after_rad"] = it.val_mae_after_rad;
+  if (std::isfinite(it.val_imu_rms_before_deg)) {
+    item["val_imu_rms_before"] = it.val_imu_rms_before_deg;
+    item["val_imu_rms_after"] = it.val_imu_rms_after_deg;
+  }
+  item["unit"] = "deg";
+  nlohmann::ordered_json refits = nlohmann::ordered_json::array();
+  for (const LoopRefit& r : it.refits) {
+    refits.push_back({{"effect", r.effect},
+                      {"run_dir", r.run_dir},
+                      {"train_rms", r.train_rms_deg},
+                      {"val_rms", r.val_rms_deg},
+                      {"val_mae_rad", r.val_mae_rad},
+                      {"val_imu_rms", std::isfinite(r.val_imu_rms_deg)
+                                          ? nlohmann::ordered_json(r.val_imu_rms_deg)
+                                          : nlohmann::ordered_json(nullptr)},
+                      {"val_bic", r.val_bic},
+                      {"free_parameters", r.free_parameters},
+                      {"evaluations", r.evaluations},
+                      {"seconds", r.seconds},
+                      {"significant", r.significant}});
+  }
+  item["refits"] = refits;
+  item["model_run_dir"] = it.model_run_dir;
+  item["ranking_seconds"] = it.ranking_seconds;
+  return item;
+}
+
+nlohmann::ordered_json loop_json(const LoopResult& result, const FitConfig& user) {
   nlohmann::ordered_json loop;
   loop["fit"] = user.path;
   loop["base_model"] = result.base_model;
   loop["iterations"] = nlohmann::ordered_json::array();
-  for (const LoopIteration& it : result.iterations) {
-    nlohmann::ordered_json item;
-    nlohmann::ordered_json ranking = nlohmann::ordered_json::array();
-    for (const EffectScore& s : it.ranking.scores) {
-      if (s.scored())
-        ranking.push_back(
-            {{"effect", s.effect}, {"score", s.explained}, {"delta_bic", s.delta_bic}});
-    }
-    item["ranking"] = ranking;
-    item["ranking_detail"] = ranking_json(it.ranking);
-    item["added_effect"] = it.added_effect.empty() ? nlohmann::ordered_json(nullptr)
-                                                   : nlohmann::ordered_json(it.added_effect);
-    item["fitted"] = it.fitted;
-    item["train_rms_before"] = it.train_rms_before_deg;
-    item["train_rms_after"] = it.train_rms_after_deg;
-    item["val_rms_before"] = it.val_rms_before_deg;
-    item["val_rms_after"] = it.val_rms_after_deg;
-    item["val_mae_before_rad"] = it.val_mae_before_rad;
-    item["val_mae_after_rad"] = it.val_mae_after_rad;
-    if (std::isfinite(it.val_imu_rms_before_deg)) {
-      item["val_imu_rms_before"] = it.val_imu_rms_before_deg;
-      item["val_imu_rms_after"] = it.val_imu_rms_after_deg;
-    }
-    item["unit"] = "deg";
-    nlohmann::ordered_json refits = nlohmann::ordered_json::array();
-    for (const LoopRefit& r : it.refits) {
-      refits.push_back({{"effect", r.effect},
-                        {"run_dir", r.run_dir},
-                        {"train_rms", r.train_rms_deg},
-                        {"val_rms", r.val_rms_deg},
-                        {"val_mae_rad", r.val_mae_rad},
-                        {"val_imu_rms", std::isfinite(r.val_imu_rms_deg)
-                                            ? nlohmann::ordered_json(r.val_imu_rms_deg)
-                                            : nlohmann::ordered_json(nullptr)},
-                        {"val_bic", r.val_bic},
-                        {"free_parameters", r.free_parameters},
-                        {"evaluations", r.evaluations},
-                        {"seconds", r.seconds},
-                        {"significant", r.significant}});
-    }
-    item["refits"] = refits;
-    item["model_run_dir"] = it.model_run_dir;
-    item["ranking_seconds"] = it.ranking_seconds;
-    loop["iterations"].push_back(item);
-  }
+  for (const LoopIteration& it : result.iterations)
+    loop["iterations"].push_back(iteration_json(it));
   loop["final_model"] = result.final_model;
   loop["base_run_dir"] = result.base_run_dir;
   loop["final_run_dir"] = result.final_run_dir;
@@ -182,17 +185,11 @@ void write_loop_outputs(const LoopResult& result, const FitConfig& user) {
   loop["probe_rollouts"] = result.probe_rollouts;
   loop["fit_seconds"] = result.fit_seconds;
   loop["wall_seconds"] = result.wall_seconds;
-  write_file_atomically((dir / "loop.json").string(), loop.dump(2) + "\n");
+  return loop;
+}
 
-  // Residuals before (base fit) and after (final fit) on the validation logs.
-  const FinishedFit base = load_finished_fit(result.base_run_dir);
-  const FinishedFit final_fit = load_finished_fit(result.final_run_dir);
-  const ResidualAnalysis before = analyse_residuals(*base.config.validation, base.best);
-  const ResidualAnalysis after = analyse_residuals(*final_fit.config.validation, final_fit.best);
-  write_file_atomically((dir / "before_series.csv").string(), residual_series_csv(before));
-  write_file_atomically((dir / "after_series.csv").string(), residual_series_csv(after));
-
-  std::ostringstream md;
+// The summary table of report.md: what each iteration added and the errors before and after.
+void write_loop_summary(std::ostringstream& md, const LoopResult& result, const FitConfig& user) {
   md << "# Closing the loop: " << user.name << "\n\n";
   md << "Base model: " << (result.base_model.empty() ? "–" : "");
   for (std::size_t i = 0; i < result.base_model.size(); ++i) {
@@ -229,6 +226,10 @@ void write_loop_outputs(const LoopResult& result, const FitConfig& user) {
   md << "\nEvaluations: " << result.evaluations << " (fits) + " << result.probe_rollouts
      << " probe rollouts; fit time " << format("%.1f", result.fit_seconds) << " s; wall time "
      << format("%.1f", result.wall_seconds) << " s.\n";
+}
+
+// One section per iteration: its ranking and its refits.
+void write_loop_iterations(std::ostringstream& md, const LoopResult& result) {
   for (std::size_t i = 0; i < result.iterations.size(); ++i) {
     const LoopIteration& it = result.iterations[i];
     md << "\n## Iteration " << i + 1 << "\n\nRanking of the residual of `" << it.model_run_dir
@@ -243,6 +244,25 @@ void write_loop_outputs(const LoopResult& result, const FitConfig& user) {
          << " | " << (r.significant ? "yes" : "no") << " |\n";
     }
   }
+}
+
+}  // namespace
+
+void write_loop_outputs(const LoopResult& result, const FitConfig& user) {
+  const fs::path dir(result.out_dir);
+  write_file_atomically((dir / "loop.json").string(), loop_json(result, user).dump(2) + "\n");
+
+  // Residuals before (base fit) and after (final fit) on the validation logs.
+  const FinishedFit base = load_finished_fit(result.base_run_dir);
+  const FinishedFit final_fit = load_finished_fit(result.final_run_dir);
+  const ResidualAnalysis before = analyse_residuals(*base.config.validation, base.best);
+  const ResidualAnalysis after = analyse_residuals(*final_fit.config.validation, final_fit.best);
+  write_file_atomically((dir / "before_series.csv").string(), residual_series_csv(before));
+  write_file_atomically((dir / "after_series.csv").string(), residual_series_csv(after));
+
+  std::ostringstream md;
+  write_loop_summary(md, result, user);
+  write_loop_iterations(md, result);
   md << "\n## Per-joint validation error, base vs final model\n\n" << joint_table(before, &after);
   md << "\n![residuals before and after](residuals_before_after.png)\n\n"
         "![ranking of the first iteration](ranking.png)\n";

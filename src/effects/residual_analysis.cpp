@@ -93,6 +93,166 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
 
 }  // namespace
 
+namespace {
+
+// The scored frames of every case as samples, with the inputs of the lag search per joint:
+// Σ (measured(t) − simulated(t − lag))² and the residual/velocity pairs for the correlation.
+struct CollectedResiduals {
+  std::vector<Sample> samples;
+  std::vector<std::vector<double>> lag_sse;                    // [joint][lag]
+  std::vector<std::vector<std::vector<double>>> lag_r, lag_v;  // [joint][lag][sample]
+  double period_s = 0.01;
+  bool imu = true;
+  std::vector<double> imu_residual[2];
+};
+
+void collect_frame_lags(const FitCase& fit_case, const RolloutResult& r, std::size_t first,
+                        std::size_t f, std::size_t j, std::size_t n, double residual,
+                        CollectedResiduals& out) {
+  const std::size_t frames = r.frames_completed;
+  const std::size_t k = f * n + j;
+  for (int lag = -kMaxLagFrames; lag <= kMaxLagFrames; ++lag) {
+    const long g = static_cast<long>(f) - lag;
+    if (g < static_cast<long>(first) || g >= static_cast<long>(frames)) continue;
+    const std::size_t li = static_cast<std::size_t>(lag + kMaxLagFrames);
+    const double e = fit_case.measured_rad[k] - r.measured_rad[g * n + j];
+    out.lag_sse[j][li] += e * e;
+    out.lag_r[j][li].push_back(residual);
+    out.lag_v[j][li].push_back(
+        central_difference(r.commanded_rad, r.time_s, frames, n, static_cast<std::size_t>(g), j));
+  }
+}
+
+Sample frame_sample(const FitCase& fit_case, const RolloutResult& r, std::size_t c, std::size_t f,
+                    std::size_t n, bool imu) {
+  const std::size_t frames = r.frames_completed;
+  const std::vector<double>& time = r.time_s;
+  Sample s;
+  s.case_index = c;
+  s.time_s = time[f] - time[0];
+  const std::size_t feet = r.foot_force_z_n.size() / frames;  // per frame
+  if (feet > 0) {
+    s.feet_in_contact = 0;
+    for (std::size_t k = 0; k < feet; ++k) {
+      if (r.foot_force_z_n[f * feet + k] > kContactForce_n) ++s.feet_in_contact;
+    }
+  }
+  if (imu) {
+    s.imu_residual_rad[0] = fit_case.measured_imu_rad[2 * f] - r.imu_roll_rad[f];
+    s.imu_residual_rad[1] = fit_case.measured_imu_rad[2 * f + 1] - r.imu_pitch_rad[f];
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t k = f * n + j;
+    s.residual_rad.push_back(fit_case.measured_rad[k] - r.measured_rad[k]);
+    s.command_velocity.push_back(central_difference(r.commanded_rad, time, frames, n, f, j));
+    s.joint_velocity.push_back(central_difference(r.measured_rad, time, frames, n, f, j));
+    s.torque_nm.push_back(r.joint_torque_nm.empty() ? 0.0 : r.joint_torque_nm[k]);
+  }
+  return s;
+}
+
+CollectedResiduals collect_residuals(const std::vector<FitCase>& cases,
+                                     const std::vector<RolloutResult>& rollouts, double settle_s,
+                                     std::size_t n) {
+  CollectedResiduals out;
+  const std::size_t lags = 2 * kMaxLagFrames + 1;
+  out.lag_sse.assign(n, std::vector<double>(lags, 0.0));
+  out.lag_r.assign(n, std::vector<std::vector<double>>(lags));
+  out.lag_v.assign(n, std::vector<std::vector<double>>(lags));
+  for (const FitCase& c : cases) out.imu = out.imu && !c.measured_imu_rad.empty();
+  double total_s = 0.0;
+  std::size_t periods = 0;
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const RolloutResult& r = rollouts[c];
+    const std::size_t frames = r.frames_completed;
+    if (frames < 2) continue;
+    total_s += r.time_s[frames - 1] - r.time_s[0];
+    periods += frames - 1;
+    const std::size_t first = first_scored_frame(cases[c], settle_s);
+    for (std::size_t f = first; f < frames; ++f) {
+      Sample s = frame_sample(cases[c], r, c, f, n, out.imu);
+      if (out.imu) {
+        for (int a = 0; a < 2; ++a) out.imu_residual[a].push_back(s.imu_residual_rad[a]);
+      }
+      for (std::size_t j = 0; j < n; ++j) {
+        collect_frame_lags(cases[c], r, first, f, j, n, s.residual_rad[j], out);
+      }
+      out.samples.push_back(std::move(s));
+    }
+  }
+  if (periods > 0) out.period_s = total_s / periods;
+  return out;
+}
+
+JointResiduals summarise_joint(const CollectedResiduals& in, std::size_t j, const std::string& name,
+                               std::vector<double>& all) {
+  JointResiduals jr;
+  jr.joint = name;
+  std::vector<double> r, t, v, tau, positive, negative, double_support, single, none;
+  for (const Sample& s : in.samples) {
+    r.push_back(s.residual_rad[j]);
+    t.push_back(s.time_s);
+    v.push_back(s.command_velocity[j]);
+    tau.push_back(s.torque_nm[j]);
+    (s.joint_velocity[j] >= 0.0 ? positive : negative).push_back(s.residual_rad[j]);
+    if (s.feet_in_contact >= 2) double_support.push_back(s.residual_rad[j]);
+    if (s.feet_in_contact == 1) single.push_back(s.residual_rad[j]);
+    if (s.feet_in_contact == 0) none.push_back(s.residual_rad[j]);
+  }
+  all.insert(all.end(), r.begin(), r.end());
+  jr.rms_deg = rms_deg_of(r);
+  jr.mean_deg = mean_deg_of(r);
+  jr.bins.push_back(bin("time_s", t, r));
+  jr.bins.push_back(bin("command_velocity_rad_s", v, r));
+  jr.bins.push_back(bin("load_torque_nm", tau, r));
+  jr.mean_moving_positive_deg = mean_deg_of(positive);
+  jr.mean_moving_negative_deg = mean_deg_of(negative);
+  jr.rms_double_support_deg = rms_deg_of(double_support);
+  jr.rms_single_support_deg = rms_deg_of(single);
+  jr.rms_no_contact_deg = rms_deg_of(none);
+  std::size_t best = kMaxLagFrames;
+  // Compare mean squared errors (the overlap shrinks with the lag).
+  const auto mse = [&](std::size_t i) {
+    return in.lag_r[j][i].empty() ? std::numeric_limits<double>::infinity()
+                                  : in.lag_sse[j][i] / in.lag_r[j][i].size();
+  };
+  for (int lag = -kMaxLagFrames; lag <= kMaxLagFrames; ++lag) {
+    const std::size_t li = static_cast<std::size_t>(lag + kMaxLagFrames);
+    jr.lag_s.push_back(lag * in.period_s);
+    jr.lag_correlation.push_back(correlation(in.lag_r[j][li], in.lag_v[j][li]));
+    if (mse(li) < mse(best)) best = li;
+  }
+  jr.best_lag_s = (static_cast<double>(best) - kMaxLagFrames) * in.period_s;
+  return jr;
+}
+
+void fill_series(const CollectedResiduals& in, const RobotModel& model, ResidualAnalysis& out) {
+  const std::size_t n = model.actuators.size();
+  out.series_columns = {"case", "time_s", "feet_in_contact"};
+  for (const auto& a : model.actuators) {
+    for (const char* leaf :
+         {".residual_rad", ".command_velocity_rad_s", ".velocity_rad_s", ".load_torque_nm"}) {
+      out.series_columns.push_back(a.name + leaf);
+    }
+  }
+  if (in.imu) {
+    out.series_columns.insert(out.series_columns.end(),
+                              {"imu.roll.residual_rad", "imu.pitch.residual_rad"});
+  }
+  for (const Sample& s : in.samples) {
+    std::vector<double> row = {static_cast<double>(s.case_index), s.time_s,
+                               static_cast<double>(s.feet_in_contact)};
+    for (std::size_t j = 0; j < n; ++j) {
+      row.insert(row.end(),
+                 {s.residual_rad[j], s.command_velocity[j], s.joint_velocity[j], s.torque_nm[j]});
+    }
+    if (in.imu) row.insert(row.end(), {s.imu_residual_rad[0], s.imu_residual_rad[1]});
+    out.series_rows.push_back(std::move(row));
+  }
+}
+
+}  // namespace
+
 ResidualAnalysis analyse_residuals(const FitnessFunction& fitness, const ParameterSet& set) {
   // Simulate with the actuator torques recorded.
   std::vector<FitCase> cases = fitness.cases();
@@ -102,135 +262,18 @@ ResidualAnalysis analyse_residuals(const FitnessFunction& fitness, const Paramet
   std::vector<RolloutResult> rollouts;
   with_torques.evaluate(set, std::numeric_limits<double>::infinity(), &rollouts);
   const RobotModel& model = fitness.model();
-  const std::size_t n = model.actuators.size();
-
+  const CollectedResiduals collected =
+      collect_residuals(cases, rollouts, fitness.options().settle_s, model.actuators.size());
   ResidualAnalysis out;
-  std::vector<Sample> samples;
-  // Lag search per joint: Σ (measured(t) − simulated(t − lag))² and the correlation inputs.
-  std::vector<std::vector<double>> lag_sse(n, std::vector<double>(2 * kMaxLagFrames + 1, 0.0));
-  std::vector<std::vector<std::vector<double>>> lag_r(n), lag_v(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    lag_r[j].resize(2 * kMaxLagFrames + 1);
-    lag_v[j].resize(2 * kMaxLagFrames + 1);
-  }
-  double mean_period_s = 0.0;
-  std::size_t periods = 0;
-  bool imu = true;
-  for (const FitCase& c : cases) imu = imu && !c.measured_imu_rad.empty();
-  std::vector<double> imu_residual[2];
-  for (std::size_t c = 0; c < cases.size(); ++c) {
-    const FitCase& fit_case = cases[c];
-    const RolloutResult& r = rollouts[c];
-    const std::size_t frames = r.frames_completed;
-    if (frames < 2) continue;
-    const std::vector<double>& time = r.time_s;
-    mean_period_s += time[frames - 1] - time[0];
-    periods += frames - 1;
-    const std::size_t first = first_scored_frame(fit_case, fitness.options().settle_s);
-    const std::size_t feet = r.foot_force_z_n.size() / frames;  // per frame
-    for (std::size_t f = first; f < frames; ++f) {
-      Sample s;
-      s.case_index = c;
-      s.time_s = time[f] - time[0];
-      if (feet > 0) {
-        s.feet_in_contact = 0;
-        for (std::size_t k = 0; k < feet; ++k) {
-          if (r.foot_force_z_n[f * feet + k] > kContactForce_n) ++s.feet_in_contact;
-        }
-      }
-      if (imu) {
-        s.imu_residual_rad[0] = fit_case.measured_imu_rad[2 * f] - r.imu_roll_rad[f];
-        s.imu_residual_rad[1] = fit_case.measured_imu_rad[2 * f + 1] - r.imu_pitch_rad[f];
-        for (int a = 0; a < 2; ++a) imu_residual[a].push_back(s.imu_residual_rad[a]);
-      }
-      for (std::size_t j = 0; j < n; ++j) {
-        const std::size_t k = f * n + j;
-        s.residual_rad.push_back(fit_case.measured_rad[k] - r.measured_rad[k]);
-        s.command_velocity.push_back(central_difference(r.commanded_rad, time, frames, n, f, j));
-        s.joint_velocity.push_back(central_difference(r.measured_rad, time, frames, n, f, j));
-        s.torque_nm.push_back(r.joint_torque_nm.empty() ? 0.0 : r.joint_torque_nm[k]);
-        for (int lag = -kMaxLagFrames; lag <= kMaxLagFrames; ++lag) {
-          const long g = static_cast<long>(f) - lag;
-          if (g < static_cast<long>(first) || g >= static_cast<long>(frames)) continue;
-          const std::size_t li = static_cast<std::size_t>(lag + kMaxLagFrames);
-          const double e = fit_case.measured_rad[k] - r.measured_rad[g * n + j];
-          lag_sse[j][li] += e * e;
-          lag_r[j][li].push_back(s.residual_rad.back());
-          lag_v[j][li].push_back(
-              central_difference(r.commanded_rad, time, frames, n, static_cast<std::size_t>(g), j));
-        }
-      }
-      samples.push_back(std::move(s));
-    }
-  }
-  const double period_s = periods > 0 ? mean_period_s / periods : 0.01;
-
   std::vector<double> all;
-  for (std::size_t j = 0; j < n; ++j) {
-    JointResiduals jr;
-    jr.joint = model.actuators[j].name;
-    std::vector<double> r, t, v, tau, positive, negative, double_support, single, none;
-    for (const Sample& s : samples) {
-      r.push_back(s.residual_rad[j]);
-      t.push_back(s.time_s);
-      v.push_back(s.command_velocity[j]);
-      tau.push_back(s.torque_nm[j]);
-      (s.joint_velocity[j] >= 0.0 ? positive : negative).push_back(s.residual_rad[j]);
-      if (s.feet_in_contact >= 2) double_support.push_back(s.residual_rad[j]);
-      if (s.feet_in_contact == 1) single.push_back(s.residual_rad[j]);
-      if (s.feet_in_contact == 0) none.push_back(s.residual_rad[j]);
-    }
-    all.insert(all.end(), r.begin(), r.end());
-    jr.rms_deg = rms_deg_of(r);
-    jr.mean_deg = mean_deg_of(r);
-    jr.bins.push_back(bin("time_s", t, r));
-    jr.bins.push_back(bin("command_velocity_rad_s", v, r));
-    jr.bins.push_back(bin("load_torque_nm", tau, r));
-    jr.mean_moving_positive_deg = mean_deg_of(positive);
-    jr.mean_moving_negative_deg = mean_deg_of(negative);
-    jr.rms_double_support_deg = rms_deg_of(double_support);
-    jr.rms_single_support_deg = rms_deg_of(single);
-    jr.rms_no_contact_deg = rms_deg_of(none);
-    std::size_t best = kMaxLagFrames;
-    for (int lag = -kMaxLagFrames; lag <= kMaxLagFrames; ++lag) {
-      const std::size_t li = static_cast<std::size_t>(lag + kMaxLagFrames);
-      jr.lag_s.push_back(lag * period_s);
-      jr.lag_correlation.push_back(correlation(lag_r[j][li], lag_v[j][li]));
-      // Compare mean squared errors (the overlap shrinks with the lag).
-      const auto mse = [&](std::size_t i) {
-        return lag_r[j][i].empty() ? std::numeric_limits<double>::infinity()
-                                   : lag_sse[j][i] / lag_r[j][i].size();
-      };
-      if (mse(li) < mse(best)) best = li;
-    }
-    jr.best_lag_s = (static_cast<double>(best) - kMaxLagFrames) * period_s;
-    out.joints.push_back(std::move(jr));
+  for (std::size_t j = 0; j < model.actuators.size(); ++j) {
+    out.joints.push_back(summarise_joint(collected, j, model.actuators[j].name, all));
   }
   out.rms_deg = rms_deg_of(all);
-  if (imu) {
-    for (const auto& r : imu_residual) out.imu_rms_deg.push_back(rms_deg_of(r));
+  if (collected.imu) {
+    for (const auto& r : collected.imu_residual) out.imu_rms_deg.push_back(rms_deg_of(r));
   }
-
-  out.series_columns = {"case", "time_s", "feet_in_contact"};
-  for (const auto& a : model.actuators) {
-    for (const char* leaf :
-         {".residual_rad", ".command_velocity_rad_s", ".velocity_rad_s", ".load_torque_nm"}) {
-      out.series_columns.push_back(a.name + leaf);
-    }
-  }
-  if (imu)
-    out.series_columns.insert(out.series_columns.end(),
-                              {"imu.roll.residual_rad", "imu.pitch.residual_rad"});
-  for (const Sample& s : samples) {
-    std::vector<double> row = {static_cast<double>(s.case_index), s.time_s,
-                               static_cast<double>(s.feet_in_contact)};
-    for (std::size_t j = 0; j < n; ++j) {
-      row.insert(row.end(),
-                 {s.residual_rad[j], s.command_velocity[j], s.joint_velocity[j], s.torque_nm[j]});
-    }
-    if (imu) row.insert(row.end(), {s.imu_residual_rad[0], s.imu_residual_rad[1]});
-    out.series_rows.push_back(std::move(row));
-  }
+  fill_series(collected, model, out);
   return out;
 }
 

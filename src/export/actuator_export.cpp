@@ -49,12 +49,15 @@ std::vector<ActuatorExport> export_actuators(const ExportInput& input) {
     ActuatorExport& a = out[i];
     a.joint = spec.name;
     a.group = spec.group;
-    a.limited = std::isfinite(spec.lower_rad) && std::isfinite(spec.upper_rad);
+    // A robot without joint stops (robot.yaml joint_stops: false) exports none either.
+    a.limited = model.joint_stops && std::isfinite(spec.lower_rad) && std::isfinite(spec.upper_rad);
     a.lower_rad = a.limited ? spec.lower_rad : 0.0;
     a.upper_rad = a.limited ? spec.upper_rad : 0.0;
     rule.fill(input, i, get, a);
     a.command_is_next_angle = rule.command_is_next_angle;
-    a.velocity_rad_s = no_load_speed(a.effort_nm, a.damping_nm_s_per_rad);
+    // A rule that knows its law's speed limit sets it (pd_torque's torque-speed curve).
+    if (a.velocity_rad_s == 0.0)
+      a.velocity_rad_s = no_load_speed(a.effort_nm, a.damping_nm_s_per_rad);
   }
   return out;
 }

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "motoflex/core/error.hpp"
-#include "motoflex/fit/fit_runner.hpp"
+#include "motoflex/fit/fit_problem.hpp"
 #include "motoflex/sim/ode_runtime.hpp"
 #include "motoflex_es/cma_es.hpp"
 #include "motoflex_es/mu_plus_lambda.hpp"

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "motoflex/core/error.hpp"
-#include "motoflex/fit/fit_runner.hpp"
+#include "motoflex/fit/fit_session.hpp"
 
 namespace motoflex {
 namespace {
@@ -42,18 +42,13 @@ bool finished(const fs::path& dir) {
 
 FinishedFit load_finished_fit(const std::string& run_dir) {
   const fs::path dir(run_dir);
-  const nlohmann::json run = read_json(dir / "run.json", run_dir);
+  read_json(dir / "run.json", run_dir);  // a clear message when this is no run folder
   if (!finished(dir)) {
     throw InputError(
         run_dir, 0, "",
         "the fit here has not finished (resume it with `motoflex resume " + run_dir + "`)");
   }
-  if (!run.contains("fit") || !run["fit"].is_string()) {
-    throw InputError((dir / "run.json").string(), 0, "fit", "missing");
-  }
-  FitOverrides overrides = overrides_from_json(run.value("overrides", nlohmann::json::object()));
-  overrides.out = fs::absolute(dir).lexically_normal().string();
-  FitConfig config = load_fit_config(run["fit"].get<std::string>(), overrides);
+  FitConfig config = load_run_config(run_dir);
   ParameterSet best = config.space->base();  // refers to the model's registry (shared_ptr)
   apply_parameter_json_file((dir / "best.json").string(), best);
   FinishedFit out{std::move(config), std::move(best), read_json(dir / "best.json", run_dir),
@@ -66,8 +61,9 @@ FinishedFit ensure_fit(const FitConfig& config) {
   if (!finished(dir)) {
     const bool resume = fs::exists(dir / "checkpoint.json") && config.strategy.kind != "nlopt";
     if (!resume && fs::exists(dir / "checkpoint.json")) fs::remove(dir / "checkpoint.json");
-    const int code = run_fit(config, resume);
-    if (code != 0 || !finished(dir)) {
+    FitSession session(config, resume);
+    session.run();
+    if (!finished(dir)) {
       throw InputError(config.out_dir, 0, "", "the fit did not finish (interrupted?)");
     }
   }

@@ -4,85 +4,83 @@
 #include <filesystem>
 #include <set>
 
-#include "motoflex/fit/effect_parameters.hpp"
 #include "motoflex/core/atomic_file.hpp"
+#include "motoflex/fit/effect_parameters.hpp"
 
 namespace motoflex {
 namespace {
 
 namespace fs = std::filesystem;
 
-nlohmann::ordered_json free_entry(const FreeParameter& p, double start) {
-  return {{"lower", p.lower},
-          {"upper", p.upper},
-          {"log", p.log_scale},
-          {"start", std::clamp(start, p.lower, p.upper)}};
+FreeParameterSpec free_spec(const FreeParameter& p, double start) {
+  FreeParameterSpec spec;
+  spec.pattern = p.name;
+  spec.lower = p.lower;
+  spec.upper = p.upper;
+  spec.log_scale = p.log_scale;
+  spec.start = std::clamp(start, p.lower, p.upper);
+  return spec;
+}
+
+std::vector<LogSource> sources(const std::vector<std::string>& logs) {
+  std::vector<LogSource> out;
+  for (const auto& log : logs) out.push_back({log, {}});
+  return out;
 }
 
 }  // namespace
 
-std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitted_free,
-                               const Effect& effect,
-                               const std::vector<std::pair<std::string, double>>& effect_start,
-                               const std::string& dir) {
-  nlohmann::ordered_json fit;
-  fit["name"] = from.name + "+" + effect.name;
-  fit["scenario"] = from.scenario_path;
-  fit["logs"] = from.train_logs;
-  if (!from.validation_logs.empty()) fit["validation"] = from.validation_logs;
-
-  nlohmann::ordered_json free = nlohmann::ordered_json::object();
+FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, const Effect& effect,
+                   const std::vector<std::pair<std::string, double>>& effect_start,
+                   const std::string& dir) {
+  FitSpec spec;
+  spec.name = from.name + "+" + effect.name;
+  spec.scenario_path = from.scenario_path;
+  spec.train_data = sources(from.train_logs);
+  spec.validation_data = sources(from.validation_logs);
   std::set<std::string> taken;
-  for (const FreeParameter& p : from.free) {
+  for (const FreeParameter& p : from.free_parameters) {
     const double start = fitted_free.contains(p.name) ? fitted_free[p.name].get<double>() : p.start;
-    free[p.name] = free_entry(p, start);
+    spec.free.push_back(free_spec(p, start));
     taken.insert(p.targets.begin(), p.targets.end());
   }
-  nlohmann::ordered_json fixed = nlohmann::ordered_json::object();
-  for (const auto& [name, value] : from.fixed) {
-    fixed[name] = value;
-    taken.insert(name);
-  }
+  spec.fixed = from.fixed;
+  for (const auto& [name, value] : from.fixed) taken.insert(name);
   for (const FreeParameter& p : effect_free_parameters(effect, from.space->base(), taken)) {
     double start = p.start;
     for (const auto& [name, value] : effect_start) {
       if (name == p.targets.front()) start = value;
     }
-    free[p.name] = free_entry(p, start);
+    spec.free.push_back(free_spec(p, start));
   }
-  fit["free"] = free;
-  if (!fixed.empty()) fit["fixed"] = fixed;
-  std::vector<std::string> effects = from.effects;
-  if (std::find(effects.begin(), effects.end(), effect.name) == effects.end()) {
-    effects.push_back(effect.name);
+  spec.effects = from.effects;
+  if (std::find(spec.effects.begin(), spec.effects.end(), effect.name) == spec.effects.end()) {
+    spec.effects.push_back(effect.name);
   }
-  fit["effects"] = effects;
+  spec.fitness_m = from.fitness_m;
+  spec.fitness_settle_s = from.fitness_settle_s;
+  spec.joint_weights = from.joint_weights;
+  spec.imu_weight = from.imu_weight;
+  spec.window_s = from.window_s;
+  spec.early_termination = from.early_termination;
+  spec.strategy = from.loop.refit_strategy;
+  spec.budget = from.loop.refit_budget;
+  spec.threads = from.threads;
+  spec.seed = from.seed;
+  spec.out_dir = fs::absolute(dir).lexically_normal().string();
+  return spec;
+}
 
-  nlohmann::ordered_json fitness = {{"m", from.fitness.m},
-                                    {"settle_s", from.fitness.settle_s},
-                                    {"early_termination", from.early_termination}};
-  if (!from.fitness.joint_weights.empty()) {
-    const RobotModel& model = *from.scenario->model;
-    for (std::size_t j = 0; j < model.actuators.size(); ++j) {
-      fitness["weights"][model.actuators[j].name] = from.fitness.joint_weights[j];
-    }
-  }
-  if (from.fitness.imu_weight > 0.0) fitness["imu_weight"] = from.fitness.imu_weight;
-  fit["fitness"] = fitness;
-  fit["strategy"] = strategy_to_json(from.loop.refit_strategy);
-  const FitBudget& budget = from.loop.refit_budget;
-  fit["budget"] = {{"generations", budget.max_generations},
-                   {"evaluations", budget.max_evaluations},
-                   {"seconds", budget.max_seconds}};
-  fit["threads"] = from.threads;
-  fit["seed"] = from.seed;
-  fit["out"] = ".";
-
+std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitted_free,
+                               const Effect& effect,
+                               const std::vector<std::pair<std::string, double>>& effect_start,
+                               const std::string& dir) {
+  const FitSpec spec = refit_spec(from, fitted_free, effect, effect_start, dir);
   fs::create_directories(dir);
   const std::string path = (fs::path(dir) / "fit.yaml").string();
-  write_file_atomically(path, "# Written by `motoflex loop`: " + from.name +
-                                  " refit with effect '" + effect.name +
-                                  "' (JSON is valid YAML)\n" + fit.dump(2) + "\n");
+  write_file_atomically(
+      path, "# Written by `motoflex loop`: " + from.name + " refit with effect '" + effect.name +
+                "' (JSON is valid YAML)\n" + fit_spec_to_json(spec).dump(2) + "\n");
   return path;
 }
 

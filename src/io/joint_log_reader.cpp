@@ -1,23 +1,32 @@
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
+#include <optional>
 #include <sstream>
 #include <system_error>
 
+#include "joint_log_sidecar.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
-#include "motoflex/io/yaml_reader.hpp"
 
 namespace motoflex {
 namespace {
 
-enum class ColumnKind { kTime, kCommanded, kMeasured, kImuRoll, kImuPitch };
+using detail::AngleUnit;
+using detail::Sidecar;
+
+enum class ColumnKind { kTime, kCommanded, kMeasured, kImuRoll, kImuPitch, kExtra };
 
 struct Column {
   ColumnKind kind;
-  std::size_t joint = 0;  // for kCommanded / kMeasured
-  std::string name;
+  std::size_t joint = 0;       // for kCommanded / kMeasured; the index among extras for kExtra
+  std::string name;            // the file's column name (errors name it)
+  std::string ours;            // our name for it, when the sidecar maps it to another
+  double scale = 1.0;          // to s or rad
+  bool check_degrees = false;  // an angle whose unit nobody declared
 };
 
 // What the header row says is in the file.
@@ -30,6 +39,7 @@ struct Layout {
   bool has_measured = false;
   bool has_roll = false;
   bool has_pitch = false;
+  std::vector<std::string> extras;  // the file's columns we do not read, in file order
 };
 
 // A file cut into numbered lines, without their "\n" or "\r\n".
@@ -79,10 +89,6 @@ void split_fields(std::string_view line, std::vector<std::string_view>& fields) 
   }
 }
 
-bool ends_with(std::string_view text, std::string_view suffix) {
-  return text.size() >= suffix.size() && text.substr(text.size() - suffix.size()) == suffix;
-}
-
 std::string shortest(double value) {
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
@@ -103,60 +109,114 @@ std::string read_whole_file(const std::string& path) {
   return text.str();
 }
 
-Layout parse_header(const std::vector<std::string_view>& names, const std::string& path, int line) {
-  Layout layout;
-  if (names.front() != "time_s") {
-    throw InputError(
-        path, line, "time_s",
-        "the first column must be 'time_s', found '" + std::string(names.front()) + "'");
+// Our name for a file column: the sidecar's mapping, else its own name when it is one of ours
+// and the sidecar does not take that name from another column; empty = an extra column.
+std::string our_name(const std::string& name, const Sidecar* sidecar) {
+  if (sidecar != nullptr) {
+    for (const detail::ColumnMapping& m : sidecar->columns) {
+      if (m.file_column == name) return m.ours;
+    }
+    for (const detail::ColumnMapping& m : sidecar->columns) {
+      if (m.ours == name) return "";
+    }
   }
+  return detail::is_our_column_name(name) ? name : "";
+}
+
+bool maps_time(const Sidecar* sidecar) {
+  if (sidecar == nullptr) return false;
+  for (const detail::ColumnMapping& m : sidecar->columns) {
+    if (m.ours == "time_s") return true;
+  }
+  return false;
+}
+
+// The scale to rad of an angle group, and whether its values must be checked for degrees.
+void angle_scale(AngleUnit unit, Column& column) {
+  column.scale = unit == AngleUnit::kDeg ? std::numbers::pi / 180.0 : 1.0;
+  column.check_degrees = unit == AngleUnit::kUndeclared;
+}
+
+Layout parse_header(const std::vector<std::string_view>& names, const Sidecar* sidecar,
+                    const std::string& path, int line) {
+  Layout layout;
   for (std::size_t i = 0; i < names.size(); ++i) {
-    const std::string name(names[i]);
+    if (names[i].empty()) {
+      throw InputError(path, line, "column " + std::to_string(i + 1), "empty column name");
+    }
     for (std::size_t j = 0; j < i; ++j) {
       if (names[j] == names[i]) {
-        throw InputError(path, line, name,
+        throw InputError(path, line, std::string(names[i]),
                          "duplicate column (columns " + std::to_string(j + 1) + " and " +
                              std::to_string(i + 1) + ")");
       }
     }
-    Column column{ColumnKind::kTime, 0, name};
-    if (i == 0) {
-      layout.columns.push_back(column);
-      continue;
+  }
+  if (sidecar != nullptr) {
+    for (const detail::ColumnMapping& m : sidecar->columns) {
+      bool found = false;
+      for (const std::string_view name : names) found = found || name == m.file_column;
+      if (!found) {
+        throw InputError(sidecar->path, m.line, "columns." + m.ours,
+                         "no column '" + m.file_column + "' in the header of " + path);
+      }
     }
-    std::string_view joint;
-    if (name == "imu.roll") {
-      column.kind = ColumnKind::kImuRoll;
-      layout.has_roll = true;
-    } else if (name == "imu.pitch") {
-      column.kind = ColumnKind::kImuPitch;
-      layout.has_pitch = true;
-    } else if (ends_with(name, ".cmd") && name.size() > 4) {
-      column.kind = ColumnKind::kCommanded;
-      joint = names[i].substr(0, name.size() - 4);
-    } else if (ends_with(name, ".meas") && name.size() > 5) {
-      column.kind = ColumnKind::kMeasured;
-      joint = names[i].substr(0, name.size() - 5);
-    } else if (name.empty()) {
-      throw InputError(path, line, "column " + std::to_string(i + 1), "empty column name");
+  }
+  const detail::ColumnUnits units = sidecar != nullptr ? sidecar->units : detail::ColumnUnits{};
+  const bool time_anywhere = maps_time(sidecar);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string name(names[i]);
+    Column column{ColumnKind::kExtra, 0, name, our_name(name, sidecar)};
+    const std::string& ours = column.ours;
+    const bool is_time = ours == "time_s";
+    if (is_time != (i == 0) && !time_anywhere) {
+      // Without a mapping the time comes first, as our own logs write it.
+      throw InputError(path, line, "time_s",
+                       i == 0 ? "the first column must be 'time_s', found '" + name +
+                                    "' (another recorder's time column can be named in the "
+                                    "sidecar: columns: {time_s: " +
+                                    name + "})"
+                              : "'time_s' must be the first column");
+    }
+    std::string joint;
+    if (is_time) {
+      column.kind = ColumnKind::kTime;
+      column.scale = units.seconds_per_time_unit;
+    } else if (ours == "imu.roll" || ours == "imu.pitch") {
+      column.kind = ours == "imu.roll" ? ColumnKind::kImuRoll : ColumnKind::kImuPitch;
+      (ours == "imu.roll" ? layout.has_roll : layout.has_pitch) = true;
+      angle_scale(units.imu, column);
+    } else if (ours.ends_with(".cmd") || ours.ends_with(".meas")) {
+      const bool commanded = ours.ends_with(".cmd");
+      joint = ours.substr(0, ours.size() - (commanded ? 4 : 5));
+      if (joint.empty()) {
+        throw InputError(path, line, name, "no joint name before '" + ours + "'");
+      }
+      column.kind = commanded ? ColumnKind::kCommanded : ColumnKind::kMeasured;
+      angle_scale(commanded ? units.cmd : units.meas, column);
     } else {
-      throw InputError(path, line, name,
-                       "unknown column (expected time_s, <joint>.cmd, <joint>.meas, imu.roll or "
-                       "imu.pitch)");
+      column.joint = layout.extras.size();
+      layout.extras.push_back(name);
     }
     if (!joint.empty()) {
       std::size_t index = 0;
       while (index < layout.joints.size() && layout.joints[index] != joint) ++index;
       if (index == layout.joints.size()) {
-        layout.joints.emplace_back(joint);
+        layout.joints.push_back(joint);
         layout.joint_has_commanded.push_back(false);
         layout.joint_has_measured.push_back(false);
       }
       column.joint = index;
       if (column.kind == ColumnKind::kCommanded) {
+        if (layout.joint_has_commanded[index]) {
+          throw InputError(path, line, name, "a second column for '" + ours + "'");
+        }
         layout.joint_has_commanded[index] = true;
         layout.has_commanded = true;
       } else {
+        if (layout.joint_has_measured[index]) {
+          throw InputError(path, line, name, "a second column for '" + ours + "'");
+        }
         layout.joint_has_measured[index] = true;
         layout.has_measured = true;
       }
@@ -226,32 +286,20 @@ double parse_value(std::string_view text, const std::string& path, int line,
   return value;
 }
 
-JointLogMeta read_sidecar(const std::string& path) {
-  const YamlValue root = YamlValue::load_file(path);
-  root.require_keys_within(
-      {"robot", "rate_hz", "motion", "units", "origin", "parameters", "notes"});
-  JointLogMeta meta;
-  const YamlValue robot = root.at("robot");
-  meta.robot = robot.as_string();
-  if (meta.robot.empty()) robot.fail("must not be empty");
-  const YamlValue rate = root.at("rate_hz");
-  meta.rate_hz = rate.as_double();
-  if (meta.rate_hz <= 0.0) rate.fail("must be positive");
-  meta.motion = root.get_string("motion", "");
-  if (const std::optional<YamlValue> units = root.find("units")) {
-    meta.units = units->as_string();
-    if (meta.units != "rad") {
-      units->fail("unsupported units '" + meta.units + "' (joint logs are in rad)");
-    }
-  }
-  meta.origin = root.get_string("origin", "");
-  if (const std::optional<YamlValue> parameters = root.find("parameters")) {
-    for (const auto& [name, value] : parameters->entries()) {
-      meta.parameters[name] = value.as_double();
-    }
-  }
-  meta.notes = root.get_string("notes", "");
-  return meta;
+// An angle beyond ±2π in a column whose unit nobody declared is almost surely in degrees.
+void check_not_degrees(double value, const Column& column, const std::string& path, int line,
+                       const std::string& sidecar, bool has_sidecar) {
+  if (!column.check_degrees || std::abs(value) <= 2.0 * std::numbers::pi) return;
+  const std::string group = column.kind == ColumnKind::kCommanded  ? "cmd"
+                            : column.kind == ColumnKind::kMeasured ? "meas"
+                                                                   : "imu";
+  throw InputError(path, line, column.name,
+                   "angle " + shortest(value) +
+                       " is beyond ±2π rad: the log looks like it is in degrees; declare its "
+                       "units in the sidecar " +
+                       sidecar + (has_sidecar ? "" : " (there is none yet)") +
+                       ": `units: deg`, or `units: {" + group +
+                       ": deg}` for this group (`units: rad` if these are radians)");
 }
 
 }  // namespace
@@ -263,6 +311,16 @@ std::string joint_log_sidecar_path(const std::string& csv_path) {
 JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements& requirements) {
   const std::string text = read_whole_file(csv_path);
   if (text.empty()) throw InputError(csv_path, 0, "", "empty file (expected a header row)");
+  // The sidecar first: it may say which column is which and in what units.
+  const std::string sidecar_path = joint_log_sidecar_path(csv_path);
+  std::optional<Sidecar> sidecar;
+  std::error_code ec;
+  if (std::filesystem::exists(sidecar_path, ec)) {
+    sidecar = detail::read_joint_log_sidecar(sidecar_path);
+  } else if (requirements.need_sidecar) {
+    throw InputError(sidecar_path, 0, "",
+                     "sidecar file not found (required next to '" + csv_path + "')");
+  }
 
   std::string_view body = text;
   // Spreadsheet programs like to start a CSV with a UTF-8 byte order mark.
@@ -278,12 +336,14 @@ JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements&
   const int header_line = lines.number();
   std::vector<std::string_view> fields;
   split_fields(line, fields);
-  const Layout layout = parse_header(fields, csv_path, header_line);
+  const Layout layout = parse_header(fields, sidecar ? &*sidecar : nullptr, csv_path, header_line);
   check_layout(layout, requirements, csv_path, header_line);
 
   JointLog log;
   log.joint_names = layout.joints;
+  log.extra_column_names = layout.extras;
   const std::size_t joint_count = layout.joints.size();
+  const std::size_t extra_count = layout.extras.size();
   const std::size_t expected_fields = layout.columns.size();
   while (lines.next(line)) {
     if (is_ignored(line)) continue;
@@ -297,13 +357,21 @@ JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements&
     const std::size_t base = log.time_s.size() * joint_count;
     if (layout.has_commanded) log.commanded_rad.resize(base + joint_count);
     if (layout.has_measured) log.measured_rad.resize(base + joint_count);
+    const std::size_t extra_base = log.extra_values.size();
+    log.extra_values.resize(extra_base + extra_count);
     for (std::size_t i = 0; i < expected_fields; ++i) {
       const Column& column = layout.columns[i];
-      const double value = parse_value(fields[i], csv_path, number, column.name);
+      if (column.kind == ColumnKind::kExtra) {
+        log.extra_values[extra_base + column.joint] = std::string(fields[i]);
+        continue;
+      }
+      const double raw = parse_value(fields[i], csv_path, number, column.name);
+      check_not_degrees(raw, column, csv_path, number, sidecar_path, sidecar.has_value());
+      const double value = column.scale == 1.0 ? raw : raw * column.scale;
       switch (column.kind) {
         case ColumnKind::kTime:
           if (!log.time_s.empty() && value <= log.time_s.back()) {
-            throw InputError(csv_path, number, "time_s",
+            throw InputError(csv_path, number, column.name,
                              "time must strictly increase (previous row " +
                                  shortest(log.time_s.back()) + " s, this row " + shortest(value) +
                                  " s)");
@@ -322,6 +390,8 @@ JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements&
         case ColumnKind::kImuPitch:
           log.imu_pitch_rad.push_back(value);
           break;
+        case ColumnKind::kExtra:
+          break;
       }
     }
   }
@@ -330,14 +400,18 @@ JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements&
         csv_path, lines.number(), "rows",
         "a joint log needs at least 2 data rows, found " + std::to_string(log.frames()));
   }
-
-  const std::string sidecar = joint_log_sidecar_path(csv_path);
-  std::error_code ec;
-  if (std::filesystem::exists(sidecar, ec)) {
-    log.meta = read_sidecar(sidecar);
-  } else if (requirements.need_sidecar) {
-    throw InputError(sidecar, 0, "",
-                     "sidecar file not found (required next to '" + csv_path + "')");
+  if (sidecar) log.meta = sidecar->meta;
+  if (!layout.extras.empty()) {
+    std::string list;
+    for (const std::string& name : layout.extras) list += (list.empty() ? "" : ", ") + name;
+    log.warnings.push_back(csv_path + ":" + std::to_string(header_line) + ": " +
+                           std::to_string(layout.extras.size()) +
+                           " extra column(s) kept but not used: " + list +
+                           " (not time_s, <joint>.cmd, <joint>.meas or imu.*, nor mapped by "
+                           "the sidecar's columns:)");
+  }
+  for (const std::string& warning : log.warnings) {
+    std::fprintf(stderr, "motoflex: warning: %s\n", warning.c_str());
   }
   return log;
 }

@@ -27,6 +27,23 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   add("sensor.resolution_bits", 0.0, 0.0, 24.0);
   add("sensor.noise_rad", 0.0, 0.0, 0.05);
   add("sensor.delay_s", 0.0, 0.0, 0.1);
+  // Added after the others so that the names above keep their order in parameter files.
+  for (const auto& a : model.actuators) {
+    const std::string joint = "joint." + a.name + ".";
+    // Reflected rotor inertia J_rotor·σ² about the joint axis (every law but bench, whose arm
+    // carries bench.armature_kg_m2); MX-106 0.027, eRob80 up to 1.1 kg·m² (bam.md §2f).
+    add(joint + "armature_kg_m2", 0.0, 0.0, 0.1);
+    // BAM's friction family (bam.md §2d; src/sim/actuator/friction_family.hpp). The exponent 2
+    // is the Gaussian Stribeck curve of stribeck_nm; the model 6 is the most general, which
+    // with these zero coefficients is Coulomb + viscous. Bounds: BAM's search bounds.
+    add(joint + "stribeck_exponent", 2.0, 0.5, 10.0);
+    add(joint + "load_friction_external", 0.0, 0.0, 0.5);
+    add(joint + "load_friction_stribeck", 0.0, 0.0, 1.0);
+    add(joint + "load_friction_external_stribeck", 0.0, 0.0, 1.0);
+    add(joint + "load_friction_quad_per_nm", 0.0, 0.0, 0.01);
+    add(joint + "load_friction_external_quad_per_nm", 0.0, 0.0, 0.01);
+    add(joint + "friction_model", 6.0, 1.0, 6.0);
+  }
   return specs;
 }
 

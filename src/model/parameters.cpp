@@ -41,7 +41,7 @@ bool parameter_pattern_matches(const std::string& pattern, const std::string& na
 namespace {
 
 // Longest suffix first, so "_nm_s_per_rad" wins over "_per_rad" and "_rad".
-constexpr std::array<std::pair<const char*, const char*>, 20> kUnitSuffixes = {{
+constexpr std::array<std::pair<const char*, const char*>, 23> kUnitSuffixes = {{
     {"_nm_s_per_rad", "N·m·s/rad"},
     {"_v_s_per_rad", "V·s/rad"},
     {"_v_per_rad_s", "V/(rad·s)"},
@@ -49,6 +49,9 @@ constexpr std::array<std::pair<const char*, const char*>, 20> kUnitSuffixes = {{
     {"_nm_per_a", "N·m/A"},
     {"_v_per_rad", "V/rad"},
     {"_kg_m2", "kg·m²"},
+    {"_per_nm", "1/(N·m)"},
+    {"_rad_s", "rad/s"},
+    {"_ticks", "tick"},
     {"_per_s", "1/s"},
     {"_ohm", "Ω"},
     {"_rad", "rad"},

@@ -2,6 +2,7 @@
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
+#include "motoflex/io/motoflex_command_file.hpp"
 
 namespace motoflex {
 
@@ -9,10 +10,24 @@ CommandTrajectory read_log_commands(const RobotModel& model, const std::string& 
                                     ParameterSet& parameters,
                                     std::map<std::string, double>& log_parameters,
                                     std::string* description) {
-  JointLogRequirements requirements;
-  requirements.need_commanded = true;
-  requirements.joints = model.actuator_names();
-  const JointLog log = read_joint_log(path, requirements);
+  JointLog log;
+  if (is_motoflex_command_file(path)) {
+    // The 2011 program's own command files replay directly, with its playback clock (the
+    // importer's default; `motoflex import-motoflex` writes the same log to disk).
+    log = import_motoflex_commands(path);
+    for (const std::string& joint : model.actuator_names()) {
+      if (!log.joint_index(joint)) {
+        throw InputError(
+            path, 1, joint,
+            "not in this MoToFlex command file (robot " + model.name + " actuates it)");
+      }
+    }
+  } else {
+    JointLogRequirements requirements;
+    requirements.need_commanded = true;
+    requirements.joints = model.actuator_names();
+    log = read_joint_log(path, requirements);
+  }
   if (!log.meta.robot.empty() && log.meta.robot != model.name) {
     throw InputError(joint_log_sidecar_path(path), 0, "robot",
                      "log is of robot '" + log.meta.robot + "', the model is '" + model.name + "'");

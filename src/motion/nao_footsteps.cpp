@@ -15,7 +15,25 @@ double smooth(double u) {
 
 }  // namespace
 
+double NaoFootsteps::transfer(double u) const {
+  u = std::clamp(u, 0.0, 1.0);
+  return (1.0 - transfer_smoothing_) * u + transfer_smoothing_ * smooth(u);
+}
+
+double NaoFootsteps::transfer_inverse(double share) const {
+  share = std::clamp(share, 0.0, 1.0);
+  if (transfer_smoothing_ == 0.0) return share;
+  // transfer() rises monotonically from 0 to 1: bisection to well below a microsecond.
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (transfer(mid) < share ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 NaoFootsteps::NaoFootsteps(const NaoWalkParams& p, double step_length_m) {
+  transfer_smoothing_ = p.zmp_transfer_smoothing;
   step_s_ = 0.5 * p.step_duration_s;
   double_support_s_ = p.double_support_ratio * step_s_;
   single_support_s_ = step_s_ - double_support_s_;
@@ -53,9 +71,9 @@ NaoFootsteps::NaoFootsteps(const NaoWalkParams& p, double step_length_m) {
   if (p.toe_off_rad > 0.0 || p.heel_strike_rad > 0.0) plan_edge_contacts(p);
 }
 
-// Toe-off and heel strike happen in the double supports, where the reference ZMP moves linearly
-// from the rear foot (`from`) to the front one (`to`). The rear heel may rise only once the ZMP
-// is past the rear toe edge, the front foot must be flat before the ZMP reaches its heel edge,
+// Toe-off and heel strike happen in the double supports, where the reference ZMP moves from the
+// rear foot (`from`) to the front one (`to`) along transfer(). The rear heel may rise only once the
+// ZMP is past the rear toe edge, the front foot must be flat before the ZMP reaches its heel edge,
 // either with kToeOffZmpMargin_m to spare; the angles shrink with the time left for them
 // (kFullEdgeRoll_s). Short steps, whose ZMP never leaves the soles' overlap in x, stay flat.
 void NaoFootsteps::plan_edge_contacts(const NaoWalkParams& p) {
@@ -67,7 +85,7 @@ void NaoFootsteps::plan_edge_contacts(const NaoWalkParams& p) {
     if (to_x <= from_x) continue;
     // Time into the double support at which the ZMP passes x.
     const auto passes = [&](double x) {
-      return std::clamp((x - from_x) / (to_x - from_x), 0.0, 1.0) * double_support_s_;
+      return transfer_inverse((x - from_x) / (to_x - from_x)) * double_support_s_;
     };
     const auto share = [](double window_s) { return std::min(1.0, window_s / kFullEdgeRoll_s); };
     // The closing step's rear foot is only half a step behind (walks with toe-off end with a
@@ -101,13 +119,13 @@ Eigen::Vector2d NaoFootsteps::zmp_ref(double t) const {
   if (k >= static_cast<int>(steps_.size())) {
     const double u = (t - walk_end_s()) / end_transfer_s_;
     const Eigen::Vector2d from = steps_.back().zmp_end();
-    return from + std::clamp(u, 0.0, 1.0) * (stand_zmp_end_m_ - from);
+    return from + transfer(u) * (stand_zmp_end_m_ - from);
   }
   const NaoFootstep& step = steps_[k];
   const Eigen::Vector2d from = k == 0 ? stand_zmp_start_m_ : steps_[k - 1].zmp_end();
   const double in_step = t - step.start_s;
   if (in_step < double_support_s_) {
-    return from + (in_step / double_support_s_) * (step.zmp_m - from);
+    return from + transfer(in_step / double_support_s_) * (step.zmp_m - from);
   }
   const double u = (in_step - double_support_s_) / single_support_s_;
   return step.zmp_m + Eigen::Vector2d(std::clamp(u, 0.0, 1.0) * step.zmp_travel_m, 0.0);

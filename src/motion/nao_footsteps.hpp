@@ -60,8 +60,9 @@ class NaoFootsteps {
   double steady_end_s() const { return steady_end_s_; }
   const std::vector<NaoFootstep>& steps() const { return steps_; }
 
-  // Reference ZMP at t: standing in the middle, moved linearly to the support foot in each
-  // double support, rolling heel to toe in single support, back to the middle at the end.
+  // Reference ZMP at t: standing in the middle, moved to the support foot in each double
+  // support along transfer(), rolling heel to toe in single support, back to the middle at the
+  // end.
   Eigen::Vector2d zmp_ref(double t) const;
 
   // Both feet and the support state at t. A flat foot is given by its sole point (edge_x_m 0,
@@ -72,6 +73,11 @@ class NaoFootsteps {
             NaoSupport& support) const;
 
  private:
+  // Share of a double-support ZMP transfer done at share u of its time: linear, blended with
+  // the quintic smoothstep by NaoWalkParams::zmp_transfer_smoothing. transfer_inverse is its
+  // inverse (the share of time at which a share of the way is done).
+  double transfer(double u) const;
+  double transfer_inverse(double share) const;
   // Index of the step running at t, −1 before the first, steps.size() after the last.
   int step_at(double t) const;
   // Toe-off and heel-strike timing of every step.
@@ -79,6 +85,7 @@ class NaoFootsteps {
 
   double step_s_ = 0.0, double_support_s_ = 0.0, single_support_s_ = 0.0;
   double half_spacing_m_ = 0.0;
+  double transfer_smoothing_ = 0.0;
   Eigen::Vector2d stand_zmp_start_m_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d stand_zmp_end_m_ = Eigen::Vector2d::Zero();
   double end_transfer_s_ = 0.0;

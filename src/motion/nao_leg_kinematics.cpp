@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "motoflex/model/body_kinematics.hpp"
+
 namespace motoflex {
 namespace {
 
@@ -53,6 +55,24 @@ NaoLegGeometry NaoLegGeometry::with_limits_of(const RobotModel& model) {
       }
       limits[j] = {model.actuators[*index].lower_rad, model.actuators[*index].upper_rad};
     }
+  }
+  return geometry;
+}
+
+NaoLegGeometry NaoLegGeometry::of(const RobotModel& model) {
+  NaoLegGeometry geometry = with_limits_of(model);
+  const auto anchor = [&model](const char* name) {
+    const ActuatorSpec& actuator = model.actuators[*model.actuator_index(name)];
+    return model.joints[actuator.joint].anchor_W0_m;
+  };
+  const auto nanometres = [](double length_m) { return std::round(length_m * 1e9) / 1e9; };
+  geometry.hip_offset_y_m = nanometres(0.5 * (anchor("LHipRoll") - anchor("RHipRoll")).norm());
+  geometry.thigh_m = nanometres((anchor("LKneePitch") - anchor("LHipRoll")).norm());
+  geometry.tibia_m = nanometres((anchor("LAnklePitch") - anchor("LKneePitch")).norm());
+  const double sole_z =
+      lowest_foot_point_z(model, body_poses(model, std::vector<double>(model.actuators.size())));
+  if (std::isfinite(sole_z)) {
+    geometry.foot_height_m = nanometres(anchor("LAnkleRoll").z() - sole_z);
   }
   return geometry;
 }

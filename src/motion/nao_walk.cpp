@@ -84,6 +84,35 @@ std::pair<double, double> reachable_com_heights(const NaoStance& stance, double 
 
 }  // namespace
 
+std::vector<std::pair<const char*, double*>> NaoWalkParams::numeric_fields() {
+  return {{"speed_mm_s", &speed_mm_s},
+          {"step_duration_s", &step_duration_s},
+          {"step_height_m", &step_height_m},
+          {"double_support_ratio", &double_support_ratio},
+          {"com_height_m", &com_height_m},
+          {"foot_spacing_m", &foot_spacing_m},
+          {"start_s", &start_s},
+          {"stop_s", &stop_s},
+          {"duration_s", &duration_s},
+          {"rate_hz", &rate_hz},
+          {"zmp_offset_x_m", &zmp_offset_x_m},
+          {"zmp_offset_y_m", &zmp_offset_y_m},
+          {"zmp_travel_x_m", &zmp_travel_x_m},
+          {"zmp_transfer_smoothing", &zmp_transfer_smoothing},
+          {"toe_off_rad", &toe_off_rad},
+          {"heel_strike_rad", &heel_strike_rad},
+          {"torso_offset_x_m", &torso_offset_x_m},
+          {"preview_s", &preview_s}};
+}
+
+std::optional<double> NaoWalkParams::numeric(std::string_view key) const {
+  NaoWalkParams copy = *this;
+  for (const auto& [name, value] : copy.numeric_fields()) {
+    if (key == name) return *value;
+  }
+  return std::nullopt;
+}
+
 std::string NaoWalkParams::validate() const {
   const auto positive = [](const char* name, double value) -> std::string {
     if (std::isfinite(value) && value > 0.0) return {};
@@ -128,6 +157,9 @@ std::string NaoWalkParams::validate() const {
         "zmp_offset_y_m = %g: must lie inside the sole, (-%g, %g) m inward of the "
         "ankle",
         zmp_offset_y_m, kSoleOuter_m, kSoleInner_m);
+  }
+  if (!(zmp_transfer_smoothing >= 0.0 && zmp_transfer_smoothing <= 1.0)) {
+    return format("zmp_transfer_smoothing = %g: must be within [0, 1]", zmp_transfer_smoothing);
   }
   if (!(toe_off_rad >= 0.0 && toe_off_rad <= kMaxToeOff_rad)) {
     return format("toe_off_rad = %g: must be within [0, %g] rad", toe_off_rad, kMaxToeOff_rad);

@@ -1,6 +1,7 @@
 #include "nao_scenario_motion.hpp"
 
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -43,34 +44,34 @@ std::string format(const char* pattern, double a, double b) {
   return buffer;
 }
 
-NaoScenarioMotion walk_from_yaml(const YamlValue& spec, const RobotModel& model) {
+NaoScenarioMotion walk_from_yaml(const YamlValue& spec, const RobotModel& model,
+                                 const std::map<std::string, double>& walk_options) {
   spec.require_keys_within({"speed_mm_s", "step_duration_s", "step_height_m",
                             "double_support_ratio", "com_height_m", "foot_spacing_m", "start_s",
                             "stop_s", "duration_s", "rate_hz", "zmp_offset_x_m", "zmp_offset_y_m",
-                            "zmp_travel_x_m", "toe_off_rad", "heel_strike_rad", "torso_offset_x_m",
-                            "preview_s", "first_swing"});
+                            "zmp_travel_x_m", "zmp_transfer_smoothing", "toe_off_rad",
+                            "heel_strike_rad", "torso_offset_x_m", "preview_s", "first_swing"});
   NaoWalkParams p;
-  read_doubles(spec, {{"speed_mm_s", &p.speed_mm_s},
-                      {"step_duration_s", &p.step_duration_s},
-                      {"step_height_m", &p.step_height_m},
-                      {"double_support_ratio", &p.double_support_ratio},
-                      {"com_height_m", &p.com_height_m},
-                      {"foot_spacing_m", &p.foot_spacing_m},
-                      {"start_s", &p.start_s},
-                      {"stop_s", &p.stop_s},
-                      {"duration_s", &p.duration_s},
-                      {"rate_hz", &p.rate_hz},
-                      {"zmp_offset_x_m", &p.zmp_offset_x_m},
-                      {"zmp_offset_y_m", &p.zmp_offset_y_m},
-                      {"zmp_travel_x_m", &p.zmp_travel_x_m},
-                      {"toe_off_rad", &p.toe_off_rad},
-                      {"heel_strike_rad", &p.heel_strike_rad},
-                      {"torso_offset_x_m", &p.torso_offset_x_m},
-                      {"preview_s", &p.preview_s}});
+  const DoubleFields fields = p.numeric_fields();
+  read_doubles(spec, fields);
+  std::string changed;
+  for (const auto& [key, value] : walk_options) {
+    bool known = false;
+    for (const auto& [name, target] : fields) {
+      if (key != name) continue;
+      *target = value;
+      known = true;
+    }
+    if (!known) spec.fail("walk option '" + key + "' is not a numeric walk key");
+    changed += ", " + key + format(" %g", value, 0.0);
+  }
   p.first_swing_left = read_side(spec, "first_swing", p.first_swing_left);
   try {
-    return {nao_walk_trajectory(model, p), p.rate_hz,
-            format("Nao walk %g mm/s, step duration %g s", p.speed_mm_s, p.step_duration_s)};
+    auto plan = std::make_shared<const NaoWalkPlan>(plan_nao_walk(model, p));
+    return {
+        plan->commands, p.rate_hz,
+        format("Nao walk %g mm/s, step duration %g s", p.speed_mm_s, p.step_duration_s) + changed,
+        plan};
   } catch (const std::invalid_argument& error) {
     fail_at_parameter(spec, error);
   }
@@ -103,7 +104,8 @@ NaoScenarioMotion kick_from_yaml(const YamlValue& spec, const RobotModel& model)
   try {
     return {nao_kick_trajectory(model, p), p.rate_hz,
             std::string("Nao kick, ") + (p.kick_left ? "left" : "right") +
-                format(" leg, %g s", p.duration_s(), 0.0)};
+                format(" leg, %g s", p.duration_s(), 0.0),
+            nullptr};
   } catch (const std::invalid_argument& error) {
     fail_at_parameter(spec, error);
   }
@@ -111,9 +113,10 @@ NaoScenarioMotion kick_from_yaml(const YamlValue& spec, const RobotModel& model)
 
 }  // namespace
 
-std::optional<NaoScenarioMotion> nao_motion_from_yaml(const YamlValue& motion,
-                                                      const RobotModel& model) {
-  if (const auto walk = motion.find("walk")) return walk_from_yaml(*walk, model);
+std::optional<NaoScenarioMotion> nao_motion_from_yaml(
+    const YamlValue& motion, const RobotModel& model,
+    const std::map<std::string, double>& walk_options) {
+  if (const auto walk = motion.find("walk")) return walk_from_yaml(*walk, model, walk_options);
   if (const auto kick = motion.find("kick")) return kick_from_yaml(*kick, model);
   return std::nullopt;
 }

@@ -37,7 +37,14 @@ std::vector<ParameterDefault> robot_parameter_defaults(const RobotModel& model,
   for (std::size_t a = 0; a < model.actuators.size(); ++a) {
     const JointHints joint_hints = a < hints.size() ? hints[a] : JointHints{};
     const ServoLawInfo& law = servo_law(actuator_servo_name(model, servo, a));
-    if (law.default_parameters != nullptr) offer(law.default_parameters(model, a, joint_hints));
+    if (law.init_defaults != nullptr) {
+      offer(law.init_defaults(model, a, joint_hints));
+    } else if (law.default_parameters != nullptr) {
+      for (const ParameterSpec& spec : law.default_parameters(model, a)) {
+        offer({{spec.name, spec.default_value, spec.lower, spec.upper,
+                "servo '" + law.name + "' default"}});
+      }
+    }
     offer(joint_friction_defaults(model.actuators[a], joint_hints));
   }
   offer({std::begin(kRolloutDefaults), std::end(kRolloutDefaults)});

@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 
+#include "axis_rows.hpp"
 #include "ground_colliders.hpp"
 #include "mimic_coupling.hpp"
 #include "motoflex/core/error.hpp"
@@ -113,6 +114,16 @@ struct Rollout::Impl {
   std::vector<std::size_t> flex_joints;              // model joint indices
   double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs
   std::vector<std::unique_ptr<ServoLaw>> servos;     // per actuator
+  // Extra rows of an actuated axis that its law asks for (null = none): the armature's inertia
+  // row and a separate friction row, each an angular motor between the joint's two bodies.
+  struct AxisRows {
+    dJointID inertia = nullptr;
+    dJointID friction = nullptr;
+    std::vector<dBodyID> load_bodies;  // what the joint moves, when the law needs τ_e
+    bool external_torque = false;
+  };
+  std::vector<AxisRows> axis_rows;  // per actuator
+  Eigen::Vector3d gravity_m_s2 = Eigen::Vector3d(0.0, 0.0, -9.81);
   std::vector<JointEncoder> encoders;
   std::vector<double> applied_torque_nm;
   dContact contact_template{};
@@ -141,8 +152,12 @@ struct Rollout::Impl {
   void build_bodies();
   void build_joints();
   void build_actuators(const ParameterSet& values);
+  dJointID add_axis_motor(std::size_t actuator);
   void add_damping_row(std::size_t actuator, double damping_nm_s_per_rad);
   void add_mimic_couplings();
+  void add_inertia_row(std::size_t actuator, double armature_kg_m2);
+  void update_inertia_rows();
+  double external_torque_nm(std::size_t actuator) const;
   void place(const std::vector<double>& pose_rad);
   void apply_servos(const double* now_rad, const double* next_rad);
   void apply_flex_springs();
@@ -160,7 +175,7 @@ void Rollout::Impl::build_world() {
   threading = dThreadingAllocateSelfThreadedImplementation();
   dWorldSetStepThreadingImplementation(world, dThreadingImplementationGetFunctions(threading),
                                        threading);
-  dWorldSetGravity(world, 0.0, 0.0, -9.81);
+  dWorldSetGravity(world, gravity_m_s2.x(), gravity_m_s2.y(), gravity_m_s2.z());
   // Set before joints are created: joints copy ERP/CFM into their limit and motor rows.
   dWorldSetERP(world, params.world_erp);
   dWorldSetCFM(world, params.world_cfm);
@@ -306,10 +321,10 @@ void Rollout::Impl::build_joints() {
       dJointSetAMotorNumAxes(motor, 2);
       dJointSetAMotorAxis(motor, 0, 1, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
       dJointSetAMotorAxis(motor, 1, 2, spec.axis2_W0.x(), spec.axis2_W0.y(), spec.axis2_W0.z());
-      dJointSetAMotorParam(motor, dParamVel, 0.0);
-      dJointSetAMotorParam(motor, dParamVel2, 0.0);
-      dJointSetAMotorParam(motor, dParamFMax, params.flex.friction_nm);
-      dJointSetAMotorParam(motor, dParamFMax2, params.flex.friction_nm);
+      detail::set_axis_motor_param(motor, dParamVel, 0.0);
+      detail::set_axis_motor_param(motor, dParamVel2, 0.0);
+      detail::set_axis_motor_param(motor, dParamFMax, params.flex.friction_nm);
+      detail::set_axis_motor_param(motor, dParamFMax2, params.flex.friction_nm);
       flex_friction_motors.push_back(motor);
     }
   }
@@ -320,6 +335,7 @@ void Rollout::Impl::build_joints() {
 void Rollout::Impl::build_actuators(const ParameterSet& values) {
   const std::size_t n = model.actuators.size();
   applied_torque_nm.assign(n, 0.0);
+  axis_rows.assign(n, AxisRows{});
   for (std::size_t i = 0; i < n; ++i) {
     const ActuatorSpec& spec = model.actuators[i];
     axes.push_back(detail::ode_axis(joints[spec.joint], model.joints[spec.joint], spec.axis));
@@ -327,9 +343,27 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
                           RandomStream({options.seed, kEncoderNoisePurpose, i}));
     const ParameterReader reader(values, laws[i]->name);
     servos.push_back(laws[i]->create({model, i, reader, options.dt_s, options.gear_substeps}));
-    const double damping_nm_s_per_rad = servos.back()->damping_row_nm_s_per_rad();
+    const ServoLaw& servo = *servos.back();
+    const double damping_nm_s_per_rad = servo.damping_row_nm_s_per_rad();
     if (damping_nm_s_per_rad > 0.0) add_damping_row(i, damping_nm_s_per_rad);
+    const double armature_kg_m2 = servo.armature_kg_m2();
+    if (armature_kg_m2 > 0.0) add_inertia_row(i, armature_kg_m2);
+    if (servo.has_friction_row()) {
+      axis_rows[i].friction = add_axis_motor(i);
+      detail::set_axis_motor_param(axis_rows[i].friction, dParamVel, 0.0);
+      detail::set_axis_motor_param(axis_rows[i].friction, dParamFMax, 0.0);
+    }
+    if (servo.needs_external_torque()) {
+      axis_rows[i].external_torque = true;
+      for (const int b : detail::moved_bodies(model, spec.joint)) {
+        if (bodies[b] != nullptr) axis_rows[i].load_bodies.push_back(bodies[b]);
+      }
+    }
   }
+}
+
+dJointID Rollout::Impl::add_axis_motor(std::size_t actuator) {
+  return detail::create_axis_motor(world, model, bodies, actuator);
 }
 
 void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_per_rad) {
@@ -337,43 +371,10 @@ void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_pe
   // rate about the actuated axis to zero with unbounded force and CFM = 1/c gives the row force
   // −c·ω at the end of the step (ODE's spring-damper equivalence with k = 0). It stays stable
   // for any c·h/I, where an explicit torque diverges once c·h/I > 2.
-  const ActuatorSpec& spec = model.actuators[actuator];
-  const JointSpec& joint = model.joints[spec.joint];
-  dBodyID parent = bodies[joint.parent_body];
-  dBodyID child = bodies[joint.child_body];
-  const Eigen::Vector3d& axis = spec.axis == 1 ? joint.axis1_W0 : joint.axis2_W0;
-  if (joint.kind == JointKind::kSlider) {
-    // The same damper along a slider: a linear motor row (N·s/m), axis fixed in the parent.
-    dJointID motor = dJointCreateLMotor(world, nullptr);
-    dJointAttach(motor, child, parent);
-    dJointSetLMotorNumAxes(motor, 1);
-    const int frame = parent != nullptr ? 2 : 0;  // relative to body2 = parent, or global
-    dJointSetLMotorAxis(motor, 0, frame, axis.x(), axis.y(), axis.z());
-    dJointSetLMotorParam(motor, dParamVel, 0.0);
-    dJointSetLMotorParam(motor, dParamFMax, dInfinity);
-    dJointSetLMotorParam(motor, dParamCFM, 1.0 / damping_nm_s_per_rad);
-    return;
-  }
-  // The axis rides on the body that carries it: a hinge axis is fixed in both bodies, a
-  // universal joint's axis 1 in the parent and axis 2 in the child; a static body is the world.
-  dBodyID carrier =
-      (joint.kind == JointKind::kUniversal || joint.kind == JointKind::kFlex) && spec.axis == 2
-          ? child
-          : parent;
-  dBodyID other = carrier == parent ? child : parent;
-  int frame = 1;  // axis given relative to body1 = carrier
-  if (carrier == nullptr) {
-    std::swap(carrier, other);
-    frame = 0;  // the carrier is the static world: the axis is fixed in the global frame
-  }
-  dJointID motor = dJointCreateAMotor(world, nullptr);
-  dJointAttach(motor, carrier, other);
-  dJointSetAMotorMode(motor, dAMotorUser);
-  dJointSetAMotorNumAxes(motor, 1);
-  dJointSetAMotorAxis(motor, 0, frame, axis.x(), axis.y(), axis.z());
-  dJointSetAMotorParam(motor, dParamVel, 0.0);
-  dJointSetAMotorParam(motor, dParamFMax, dInfinity);
-  dJointSetAMotorParam(motor, dParamCFM, 1.0 / damping_nm_s_per_rad);
+  dJointID motor = add_axis_motor(actuator);
+  detail::set_axis_motor_param(motor, dParamVel, 0.0);
+  detail::set_axis_motor_param(motor, dParamFMax, dInfinity);
+  detail::set_axis_motor_param(motor, dParamCFM, 1.0 / damping_nm_s_per_rad);
 }
 
 void Rollout::Impl::add_mimic_couplings() {
@@ -386,6 +387,33 @@ void Rollout::Impl::add_mimic_couplings() {
                       mimic->multiplier, mimic->offset,
                       mimic->leader_axis == 1 ? leader.actuator1 : leader.actuator2});
   }
+}
+
+void Rollout::Impl::add_inertia_row(std::size_t actuator, double armature_kg_m2) {
+  // The armature J as joint-space inertia (MuJoCo's armature: J·q̈ on the joint's own equation,
+  // no coupling to the other joints). ODE solves a motor row to J·v₁ = v_target − CFM·λ, so a row
+  // that targets the rate at the start of the step, with unbounded force and CFM = h/J, applies
+  // λ = −J·(v₁ − v₀)/h: the rotor's inertial reaction, implicitly, whatever J·h/I. The joint's
+  // equation becomes (I + J)·(v₁ − v₀)/h = τ, exactly as if J were added to the inertia it
+  // moves (tests/sim/armature_test.cpp). The alternative, a rotor body on the parent coupled 1:1
+  // to the child by a transmission joint, costs a body and a constraint per joint and couples
+  // the joint to the parent's rotation with the whole J, where a real rotor (J/N² spinning at
+  // N·q̇) couples with J/N only; MuJoCo's armature, which the MJCF export writes, has neither.
+  axis_rows[actuator].inertia = add_axis_motor(actuator);
+  dJointID motor = axis_rows[actuator].inertia;
+  detail::set_axis_motor_param(motor, dParamVel, 0.0);
+  detail::set_axis_motor_param(motor, dParamFMax, dInfinity);
+  detail::set_axis_motor_param(motor, dParamCFM, options.dt_s / armature_kg_m2);
+}
+
+void Rollout::Impl::update_inertia_rows() {
+  for (const AxisRows& rows : axis_rows) {
+    if (rows.inertia != nullptr) detail::target_current_rate(rows.inertia);
+  }
+}
+
+double Rollout::Impl::external_torque_nm(std::size_t actuator) const {
+  return detail::gravity_torque_nm(axes[actuator], axis_rows[actuator].load_bodies, gravity_m_s2);
 }
 
 void Rollout::Impl::place(const std::vector<double>& pose_rad) {
@@ -454,8 +482,12 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
     input.next_command_rad = next_rad[i];
     input.angle_rad = axis.angle_rad();
     input.rate_rad_s = axis.rate_rad_s();
+    input.external_torque_nm = axis_rows[i].external_torque ? external_torque_nm(i) : 0.0;
     const ServoOutput out = servos[i]->step(input);
     axis.set_motor(out.row.velocity_rad_s, out.row.fmax_nm);
+    if (axis_rows[i].friction != nullptr) {
+      detail::set_axis_motor_param(axis_rows[i].friction, dParamFMax, out.friction_row.fmax_nm);
+    }
     applied_torque_nm[i] = out.torque_nm;
     if (std::isfinite(out.torque_nm)) {
       const ActuatorSpec& spec = model.actuators[i];
@@ -586,6 +618,7 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
   try {
     s.apply_servos(command_now_rad, command_next_rad);
     for (const auto& mimic : s.mimics) mimic.drive(s.options.dt_s);
+    s.update_inertia_rows();
     s.apply_flex_springs();
     s.collide_feet();
     // Our ODE error handler throws: an error inside the step interrupts it (see ~Impl).

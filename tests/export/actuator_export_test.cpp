@@ -3,8 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <memory>
+#include <numbers>
+
 #include "export_test_support.hpp"
 #include "motoflex/export/actuator_export.hpp"
+#include "motoflex/sim/actuator/servo_law.hpp"
 
 namespace motoflex {
 namespace {
@@ -51,6 +56,53 @@ TEST(ActuatorExport, BenchServoLinearisedAtTheXl330Defaults) {
   EXPECT_NEAR(a.friction_nm, 0.05, 1e-15);
   EXPECT_NEAR(a.armature_kg_m2, 0.005, 1e-15);
   EXPECT_EQ(a.reduction, 1.0);
+}
+
+// The pendulum bench with its joint run by `law` (servo.pendulum.*) and the law's defaults.
+std::shared_ptr<const RobotModel> pendulum_with(const std::string& law) {
+  RobotModel model = *testing::load_robot("servo_pendulum");
+  model.actuators[0].servo_scope = "pendulum";
+  add_servo_law_defaults(model, law);
+  return std::make_shared<const RobotModel>(std::move(model));
+}
+
+TEST(ActuatorExport, DynamixelLinearisedLikeTheBenchItReproduces) {
+  // The XL330 defaults of both laws describe the same servo (kp 400, divisor 256 = BAM's
+  // error gain, 885/885 duty, K_t 0.6, R 2.6, 7.4 V): the same linear PD.
+  const auto model = pendulum_with("dynamixel");
+  const ActuatorExport bench = export_actuators(defaults(*model, "bench")).at(0);
+  ExportInput input = defaults(*model, "dynamixel");
+  input.parameters.set("joint.pendulum.armature_kg_m2", 0.005);
+  const ActuatorExport dynamixel = export_actuators(input).at(0);
+  EXPECT_NEAR(dynamixel.kp_nm_per_rad, bench.kp_nm_per_rad, 1e-4 * bench.kp_nm_per_rad);
+  EXPECT_EQ(dynamixel.kv_nm_s_per_rad, 0.0);
+  EXPECT_NEAR(dynamixel.effort_nm, bench.effort_nm, 1e-12);
+  EXPECT_NEAR(dynamixel.damping_nm_s_per_rad, bench.damping_nm_s_per_rad, 1e-12);
+  EXPECT_EQ(dynamixel.friction_nm, bench.friction_nm);
+  EXPECT_EQ(dynamixel.armature_kg_m2, 0.005);
+  // The D register: kd/16 PWM counts per tick of change per 1 ms cycle, through g·U/885.
+  input.parameters.set("servo.pendulum.kd", 32.0);
+  input.parameters.set("servo.pendulum.gear_ratio", 10.0);
+  input.parameters.set("servo.pendulum.Kt_nm_per_a", 0.06);
+  const ActuatorExport geared = export_actuators(input).at(0);
+  const double counts_to_nm = 10.0 * 0.06 / 2.6 * 7.4 / 885.0;
+  EXPECT_NEAR(geared.kv_nm_s_per_rad,
+              counts_to_nm * 32.0 / 16.0 * 1e-3 * 4096.0 / (2.0 * std::numbers::pi), 1e-12);
+  EXPECT_NEAR(geared.damping_nm_s_per_rad, 0.05 + 0.6 * 0.6 / 2.6, 1e-12);  // N²·K_t²/R
+  EXPECT_EQ(geared.reduction, 10.0);
+}
+
+TEST(ActuatorExport, PdTorqueIsItsOwnPd) {
+  const auto model = pendulum_with("pd_torque");
+  ExportInput input = defaults(*model, "pd_torque");
+  input.parameters.set("servo.pendulum.no_load_speed_rad_s", 6.0);
+  const ActuatorExport a = export_actuators(input).at(0);
+  EXPECT_EQ(a.kp_nm_per_rad, 20.0);
+  EXPECT_EQ(a.kv_nm_s_per_rad, 0.5);
+  EXPECT_EQ(a.effort_nm, 5.0);
+  EXPECT_EQ(a.velocity_rad_s, 6.0);  // the torque-speed curve's no-load speed
+  EXPECT_EQ(a.damping_nm_s_per_rad, 0.05);
+  EXPECT_EQ(a.friction_nm, 0.05);
 }
 
 TEST(ActuatorExport, IdealServoIsAStiffDeadbeatPd) {

@@ -48,6 +48,7 @@ inline std::map<std::string, double> fitted_values(const RobotModel& model) {
     if (s.name.rfind("sensor.", 0) == 0 || s.name.find("encoder") != std::string::npos ||
         s.name.find("stribeck") != std::string::npos ||
         s.name.find("load_friction") != std::string::npos ||
+        s.name.find("friction_model") != std::string::npos ||
         s.name.rfind("motor.R_drift", 0) == 0 || s.name.rfind("motor.supply_sag", 0) == 0) {
       value = s.default_value;  // effects the exports drop: keep them neutral
     }

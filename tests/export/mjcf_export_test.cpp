@@ -79,9 +79,13 @@ TEST(MjcfExport, NaoIsFreeFloatingWithTheFittedJointValues) {
   EXPECT_EQ(m->opt.timestep, 0.001);
   EXPECT_EQ(m->opt.integrator, mjINT_IMPLICIT);
   expect_actuated_values(*f.input, *m);
-  // Armature of the motoflex servo = the gear's small mass m_g of the joint's group.
+  // Armature of the motoflex servo = the gear's small mass m_g of the joint's group plus the
+  // joint's reflected rotor inertia.
   const int knee = mj_name2id(m.get(), mjOBJ_JOINT, "LKneePitch");
-  EXPECT_EQ(m->dof_armature[m->jnt_dofadr[knee]], f.input->parameters.get("gear.B.mass_kg_m2"));
+  EXPECT_GT(f.input->parameters.get("joint.LKneePitch.armature_kg_m2"), 0.0);
+  EXPECT_EQ(m->dof_armature[m->jnt_dofadr[knee]],
+            f.input->parameters.get("gear.B.mass_kg_m2") +
+                f.input->parameters.get("joint.LKneePitch.armature_kg_m2"));
   double mass = 0.0;
   for (int b = 1; b < m->nbody; ++b) mass += m->body_mass[b];
   EXPECT_NEAR(mass, 5.00591, 1e-9);

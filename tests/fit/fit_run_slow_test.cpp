@@ -9,7 +9,8 @@
 #include "cli/cli_test_support.hpp"
 #include "fit_test_support.hpp"
 #include "motoflex/fit/fit_config.hpp"
-#include "motoflex/fit/fit_runner.hpp"
+#include "motoflex/fit/fit_problem.hpp"
+#include "motoflex/fit/fit_session.hpp"
 
 namespace motoflex::testing {
 namespace {
@@ -28,7 +29,7 @@ TEST(FitRun, RecoversTheTruthFromNoiseFreeLogs) {
   const std::string fit =
       write_pendulum_fit(dir, dir / "data", "{kind: cma_es, sigma: 0.3}", "{evaluations: 1200}",
                          "out: " + (dir / "run").string() + "\n");
-  ASSERT_EQ(run_fit(load_fit_config(fit), false), 0);
+  FitSession(load_fit_config(fit), false).run();
   const nlohmann::json best = read_json(dir / "run" / "best.json");
   // With R fixed at its truth, K_t (through K_t/R), the viscous term (through K_t²/R + K_v),
   // the Coulomb friction and the armature are all identifiable.
@@ -45,7 +46,7 @@ TEST(FitRun, NoisyLogsReachTheNoiseFloor) {
   const std::string fit =
       write_pendulum_fit(dir, dir / "data", "{kind: cma_es, sigma: 0.3}", "{evaluations: 800}",
                          "out: " + (dir / "run").string() + "\n");
-  ASSERT_EQ(run_fit(load_fit_config(fit), false), 0);
+  FitSession(load_fit_config(fit), false).run();
   const nlohmann::json summary = read_json(dir / "run" / "summary.json");
   const double rms_rad = summary["rms_deg"]["overall"].get<double>() * M_PI / 180.0;
   EXPECT_LT(rms_rad, 1.1 * noise_rad);
@@ -67,11 +68,11 @@ TEST(FitRun, ResumedRunEqualsAnUninterruptedOne) {
   whole.out = (dir / "whole").string();
   part.out = (dir / "part").string();
   part.max_generations = 3;
-  ASSERT_EQ(run_fit(load_fit_config(fit, whole), false), 0);
-  ASSERT_EQ(run_fit(load_fit_config(fit, part), false), 0);
+  FitSession(load_fit_config(fit, whole), false).run();
+  FitSession(load_fit_config(fit, part), false).run();
   FitOverrides rest = part;
   rest.max_generations = 8;
-  ASSERT_EQ(run_fit(load_fit_config(fit, rest), true), 0);
+  FitSession(load_fit_config(fit, rest), true).run();
   EXPECT_EQ(generations_without_seconds(dir / "whole"), generations_without_seconds(dir / "part"));
   EXPECT_EQ(best_without_date(dir / "whole"), best_without_date(dir / "part"));
 }
@@ -86,8 +87,8 @@ TEST(FitRun, EarlyTerminationChangesNoSelection) {
   FitConfig early = load_fit_config(with, a);
   FitConfig full = load_fit_config(with, b);
   full.early_termination = false;
-  ASSERT_EQ(run_fit(early, false), 0);
-  ASSERT_EQ(run_fit(full, false), 0);
+  FitSession(early, false).run();
+  FitSession(full, false).run();
   // Same best point and the same best-so-far every generation; only the medians (of individuals
   // that were stopped early) may differ.
   EXPECT_EQ(best_without_date(dir / "early"), best_without_date(dir / "full"));

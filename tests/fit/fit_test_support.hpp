@@ -11,7 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "motoflex/fit/fit_config.hpp"
-#include "motoflex/fit/fit_runner.hpp"
+#include "motoflex/fit/fit_problem.hpp"
+#include "motoflex/fit/fit_session.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/scenario/scenario.hpp"
 #include "motoflex/sim/rollout_log.hpp"
@@ -102,8 +103,8 @@ inline void expect_one_and_two_threads_identical(const std::string& fit,
   one.out = (dir / "one").string();
   two.threads = 2;
   two.out = (dir / "two").string();
-  ASSERT_EQ(run_fit(load_fit_config(fit, one), false), 0);
-  ASSERT_EQ(run_fit(load_fit_config(fit, two), false), 0);
+  FitSession(load_fit_config(fit, one), false).run();
+  FitSession(load_fit_config(fit, two), false).run();
   EXPECT_EQ(generations_without_seconds(dir / "one"), generations_without_seconds(dir / "two"));
   EXPECT_EQ(best_without_date(dir / "one"), best_without_date(dir / "two"));
 }

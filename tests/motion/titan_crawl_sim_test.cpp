@@ -121,14 +121,14 @@ TEST(TitanCrawlSimulation, PostureAWalksOnePeriodOnThreeFeet) {
   const CrawlRun run = simulate_crawl(TitanPosture::kA, 1, true);
   print("posture A, one period, servo lead", run);
   ASSERT_EQ(run.end, RolloutEnd::kCompleted) << run.end_detail;
-  // Planned: 0.05 m/s × 4.8 s = 0.24 m.
-  EXPECT_NEAR(run.advance_m, 0.24, 0.25 * 0.24);
-  EXPECT_LT(std::abs(run.lateral_drift_m), 0.01);
-  // The three stance feet stay on the ground through every swing (≤ 0.5 mm: resting on the
-  // soft contact), and the swing foot reaches the planned 0.05 m at mid-swing.
-  EXPECT_LT(run.highest_stance_foot_m, 0.5e-3);
-  EXPECT_NEAR(run.lowest_swing_apex_m, 0.05, 0.005);
-  EXPECT_LT(run.most_tilt_rad, 0.02);
+  // Planned: 0.05 m/s × 4.8 s = 0.24 m; measured 0.231 m (the feet slip a little at each
+  // touchdown), drift −1.3 mm, stance feet ≤ 0.07 mm up (resting on the soft contact), swing
+  // apex 0.0498 m at mid-swing, tilt 0.0006 rad.
+  EXPECT_NEAR(run.advance_m, 0.24, 0.025);
+  EXPECT_LT(std::abs(run.lateral_drift_m), 0.004);
+  EXPECT_LT(run.highest_stance_foot_m, 0.2e-3);
+  EXPECT_NEAR(run.lowest_swing_apex_m, 0.05, 0.002);
+  EXPECT_LT(run.most_tilt_rad, 0.002);
 }
 
 TEST(TitanCrawlSimulation, PostureAWalksWithThePlainCommandsToo) {
@@ -137,10 +137,11 @@ TEST(TitanCrawlSimulation, PostureAWalksWithThePlainCommandsToo) {
   const CrawlRun run = simulate_crawl(TitanPosture::kA, 1, false);
   print("posture A, one period, plain commands", run);
   ASSERT_EQ(run.end, RolloutEnd::kCompleted) << run.end_detail;
-  EXPECT_NEAR(run.advance_m, 0.24, 0.25 * 0.24);
-  EXPECT_LT(run.lowest_swing_apex_m, 0.045);
-  EXPECT_GT(run.lowest_swing_apex_m, 0.02);
-  EXPECT_LT(run.most_tilt_rad, 0.05);
+  // Measured: advance 0.216 m (10 % short: late landings), swing apex 0.030 m, tilt 0.007 rad.
+  EXPECT_NEAR(run.advance_m, 0.216, 0.03);
+  EXPECT_LT(run.advance_m, 0.24 - 0.01);  // shorter than with the servo lead
+  EXPECT_NEAR(run.lowest_swing_apex_m, 0.030, 0.007);
+  EXPECT_LT(run.most_tilt_rad, 0.02);
 }
 
 }  // namespace

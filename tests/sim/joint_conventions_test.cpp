@@ -31,8 +31,14 @@ struct Case {
            (structure.universal_joints ? " universal" : " hinges");
   }
 };
-const Case kCases[] = {{"nao", {1, true}},  {"nao", {1, false}},   {"nao", {2, true}},
-                       {"nao", {2, false}}, {"titan8", {1, true}}, {"servo_pendulum", {1, true}}};
+// Later tests pick cases by index: new ones go at the end.
+const Case kCases[] = {{"nao", {1, true}},
+                       {"nao", {1, false}},
+                       {"nao", {2, true}},
+                       {"nao", {2, false}},
+                       {"titan8", {1, true}},
+                       {"servo_pendulum", {1, true}},
+                       {"nao_motoflex_2011", {2, true}}};
 
 // A random pose inside the middle 80 % of every actuator's range (±1 rad if unlimited).
 std::vector<double> random_pose(const RobotModel& model, std::mt19937_64& rng) {

@@ -6,6 +6,8 @@
 
 #include <stdexcept>
 
+#include "motoflex/sim/actuator/friction_family.hpp"
+
 namespace motoflex {
 namespace {
 
@@ -62,7 +64,7 @@ TEST(ServoStagesTest, BenchServoWithTorqueDisabledIsFree) {
 }
 
 TEST(ServoStagesTest, JointFrictionBudgetIsCoulombPlusViscous) {
-  const JointFrictionParams params{.coulomb_nm = 0.05, .viscous_nm_s_per_rad = 0.2};
+  const FrictionParams params{.coulomb_nm = 0.05, .viscous_nm_s_per_rad = 0.2};
   MotorCommand command = joint_friction(params, 0.0);
   EXPECT_EQ(command.velocity_rad_s, 0.0);
   EXPECT_EQ(command.fmax_nm, 0.05);
@@ -73,11 +75,11 @@ TEST(ServoStagesTest, JointFrictionBudgetIsCoulombPlusViscous) {
 }
 
 TEST(ServoStagesTest, StribeckAndLoadDependentFrictionBudget) {
-  const JointFrictionParams params{.coulomb_nm = 0.1,
-                                   .viscous_nm_s_per_rad = 0.2,
-                                   .stribeck_nm = 0.3,
-                                   .stribeck_velocity_rad_s = 0.05,
-                                   .load_coefficient = 0.1};
+  const FrictionParams params{.coulomb_nm = 0.1,
+                              .viscous_nm_s_per_rad = 0.2,
+                              .stribeck_nm = 0.3,
+                              .stribeck_velocity_rad_s = 0.05,
+                              .load_motor = 0.1};
   // At rest the full breakaway torque F_c + F_s holds the joint (plus K_l·|τ|).
   EXPECT_DOUBLE_EQ(joint_friction(params, 0.0).fmax_nm, 0.4);
   EXPECT_DOUBLE_EQ(joint_friction(params, 0.0, -2.0).fmax_nm, 0.4 + 0.2);

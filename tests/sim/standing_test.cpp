@@ -79,8 +79,9 @@ TEST(StandingTest, NaoStandsOnIdealServos) {
       "[ stand   ] nao ideal: torso z0 %.4f m, max |Δz| %.2f mm, max tilt %.4f rad, "
       "%.2f s wall\n",
       torso_z(s.result, 0), 1e3 * dz, max_tilt_rad(s.result), s.seconds);
-  EXPECT_LT(dz, 0.02);
-  EXPECT_LT(max_tilt_rad(s.result), 0.1);
+  // Measured: 1.02 mm (settling onto the soft contacts), 0.0001 rad.
+  EXPECT_LT(dz, 0.003);
+  EXPECT_LT(max_tilt_rad(s.result), 0.001);
 }
 
 TEST(StandingTest, NaoStandsWithTheFullMotoflexPipeline) {
@@ -95,8 +96,9 @@ TEST(StandingTest, NaoStandsWithTheFullMotoflexPipeline) {
       "[ stand   ] nao motoflex flex 2: torso z0 %.4f m, max |Δz| %.2f mm, max tilt "
       "%.4f rad, %.2f s wall\n",
       torso_z(s.result, 0), 1e3 * dz, max_tilt_rad(s.result), s.seconds);
-  EXPECT_LT(dz, 0.02);
-  EXPECT_LT(max_tilt_rad(s.result), 0.1);
+  // Measured: 1.05 mm, 0.0003 rad (the gear springs and flexible links barely give).
+  EXPECT_LT(dz, 0.003);
+  EXPECT_LT(max_tilt_rad(s.result), 0.002);
 }
 
 TEST(StandingTest, Titan8StandsOnItsVelocityServos) {
@@ -119,9 +121,10 @@ TEST(StandingTest, Titan8StandsOnItsVelocityServos) {
       "last-3-s spread %.3f mm, max tilt %.4f rad, %.2f s wall\n",
       torso_z(r, 0), torso_z(r, last), 1e3 * sag_m, 1e3 * spread_m, max_tilt_rad(r), s.seconds);
   EXPECT_NEAR(torso_z(r, 0), 0.243 + 0.01, 1e-9);
-  EXPECT_LT(std::abs(sag_m), 0.01);
-  EXPECT_LT(spread_m, 0.001);
-  EXPECT_LT(max_tilt_rad(r), 0.02);
+  // Measured: sag 0.01 mm, spread 0.001 mm, tilt below 1e-4 rad.
+  EXPECT_LT(std::abs(sag_m), 1e-4);
+  EXPECT_LT(spread_m, 1e-5);
+  EXPECT_LT(max_tilt_rad(r), 0.001);
 }
 
 }  // namespace

@@ -44,8 +44,11 @@ namespace motoflex {
 // as the armature of the motoflex servo. In motoflex m_g sits in the torque path (Algorithm 2),
 // not on the joint, so this adds inertia that the ODE rollout does not see (the servo is heavily
 // overdamped, so its effect on tracking is small; measured in tests/export/). The bench's
-// `bench.armature_kg_m2` is its rotor inertia already reflected through the gear (BAM). Ideal
-// and velocity servos have none.
+// `bench.armature_kg_m2` is its rotor inertia already reflected through the gear (BAM). Every
+// other law adds the joint's own `joint.<J>.armature_kg_m2` (the rollout's joint-space inertia
+// row, which is MuJoCo's armature exactly); the stiff ideal/velocity PD counts it in the inertia
+// it moves. pd_torque and the firmware laws (dynamixel, feetech) are linearised in their rule
+// files (src/export/servo/).
 //
 // Not representable and dropped: the PID integral, the motor inductance, the gear's backlash,
 // spring and damped small mass, Stribeck and load-dependent friction, sensor effects, and the

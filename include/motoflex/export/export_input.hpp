@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "motoflex/core/utc_time.hpp"
 #include "motoflex/model/parameters.hpp"
 #include "motoflex/model/robot_model.hpp"
 
@@ -42,8 +43,5 @@ struct ExportInput {
 // `parameters`' robot (`robot_name`).
 FitProvenance read_fitted_parameters(const std::string& path, const std::string& robot_name,
                                      ParameterSet& parameters);
-
-// UTC time now as "YYYY-MM-DDTHH:MM:SSZ".
-std::string utc_now_iso8601();
 
 }  // namespace motoflex

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "motoflex/model/effect_library.hpp"
 #include "motoflex/fit/parameter_space.hpp"
+#include "motoflex/model/effect_library.hpp"
 #include "motoflex/model/parameters.hpp"
 
 namespace motoflex {

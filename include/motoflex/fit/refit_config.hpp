@@ -5,8 +5,8 @@
 #include <utility>
 #include <vector>
 
-#include "motoflex/model/effect_library.hpp"
 #include "motoflex/fit/fit_config.hpp"
+#include "motoflex/model/effect_library.hpp"
 
 namespace motoflex {
 
@@ -17,6 +17,10 @@ namespace motoflex {
 // and budget are from.loop's refit options; the logs are from's, by absolute path. The file is
 // a plain fit config (JSON, which YAML reads), so `motoflex fit`, `resume` and `residuals`
 // work on it as on any other.
+FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, const Effect& effect,
+                   const std::vector<std::pair<std::string, double>>& effect_start,
+                   const std::string& dir);
+// refit_spec written as `<dir>/fit.yaml`; returns its path.
 std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitted_free,
                                const Effect& effect,
                                const std::vector<std::pair<std::string, double>>& effect_start,

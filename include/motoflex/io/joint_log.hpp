@@ -13,24 +13,33 @@ namespace motoflex {
 // (walk.csv → walk.yaml).
 //
 // CSV: a UTF-8 byte order mark, '#' comment lines and blank lines (anywhere) are ignored; the
-// first other line is the header: `time_s` first, then any of `<joint>.cmd` (commanded angle,
-// rad), `<joint>.meas` (measured angle, rad), `imu.roll`, `imu.pitch` (rad), in any order;
-// joints are numbered in the order their first column appears. Each following line is one
-// frame of comma-separated numbers (spaces around fields are allowed); time must strictly
-// increase; all values are finite. Either every joint has a .cmd column or none has, and the
-// same for .meas.
+// first other line is the header. Our column names are `time_s`, `<joint>.cmd` (commanded
+// angle), `<joint>.meas` (measured angle), `imu.roll`, `imu.pitch`; joints are numbered in the
+// order their first column appears. Without a sidecar `columns:` map, time_s comes first. Each
+// following line is one frame of comma-separated fields (spaces around fields are allowed); time
+// must strictly increase (the spacing may vary: the physics interpolates the commands linearly
+// between frames); the values of our columns are finite numbers. Either every joint has a .cmd
+// column or none has, and the same for .meas. Any other column is an extra one: kept as text in
+// JointLog::extra_* and otherwise ignored, with one warning naming them all.
 //
-// Sidecar keys: robot (string, required), rate_hz (number > 0, required), motion (string),
-// units (only "rad"), origin (string, e.g. "motoflex record truth=..." or "imported from BAM
-// file X"), parameters (mapping name → number: values the model should use for this log, e.g.
-// bench.mass_kg), notes (string). Other keys are errors.
+// Sidecar keys: robot (string, required), rate_hz (number > 0, required: the nominal rate),
+// motion (string), units, columns, origin (string, e.g. "motoflex record truth=..." or
+// "imported from BAM file X"), parameters (mapping name → number: values the model should use
+// for this log, e.g. bench.mass_kg), notes (string). Other keys are errors.
+//   columns: {<our name>: <the file's column>, ...}, e.g. {time_s: t, knee.meas: pos_knee}: the
+//     file's columns under their own names; time may then be any column.
+//   units: rad | deg (every angle column), or per column group
+//     {time: s|ms|us|µs|ns, angles: rad|deg, cmd: rad|deg, meas: rad|deg, imu: rad|deg}
+//     (cmd/meas/imu override angles). Angles are converted to rad and time to s on reading.
+//     An angle beyond ±2π in a group whose unit is not declared is an error (it looks like
+//     degrees); declare `units: rad` for multi-turn joints.
 
 struct JointLogMeta {
-  std::string robot;                         // robot name, e.g. "nao"
-  double rate_hz = 0.0;                      // nominal frame rate; 0 when there is no sidecar
-  std::string motion;                        // what the robot did, free text
-  std::string units = "rad";                 // angle unit of the CSV; only "rad" is supported
-  std::string origin;                        // how the log came to be (recorded, imported, ...)
+  std::string robot;          // robot name, e.g. "nao"
+  double rate_hz = 0.0;       // nominal frame rate; 0 when there is no sidecar
+  std::string motion;         // what the robot did, free text
+  std::string units = "rad";  // angle unit of the log in memory (always rad; see units: above)
+  std::string origin;         // how the log came to be (recorded, imported, ...)
   std::map<std::string, double> parameters;  // per-log model parameters, e.g. bench.mass_kg
   std::string notes;                         // free text
 };
@@ -44,6 +53,14 @@ struct JointLog {
   std::vector<double> measured_rad;
   std::vector<double> imu_roll_rad;   // one per frame; empty when absent
   std::vector<double> imu_pitch_rad;  // one per frame; empty when absent
+  // The file's columns that are none of ours, in file order, and their fields as written
+  // (frame-major [frame * extra_column_names.size() + column]). Not written back by
+  // write_joint_log.
+  std::vector<std::string> extra_column_names;
+  std::vector<std::string> extra_values;
+  // What the reader noticed but accepted (e.g. extra columns), one line each, also printed to
+  // stderr as "motoflex: warning: ...".
+  std::vector<std::string> warnings;
   JointLogMeta meta;
 
   std::size_t frames() const { return time_s.size(); }
@@ -82,9 +99,11 @@ std::string joint_log_sidecar_path(const std::string& csv_path);
 
 // Reads a joint log and its sidecar (if present). Every problem with the files throws
 // InputError naming the file, the line and the column or key: missing or empty file, bad
-// header (time_s not first, unknown or duplicate column, missing .cmd/.meas, a required joint
-// missing), wrong field count, non-numeric or non-finite value, time not strictly increasing,
-// fewer than 2 frames, and any sidecar problem. Numbers are parsed locale-independently.
+// header (no time column, time_s not first without a mapping, duplicate or empty column name,
+// missing .cmd/.meas, a required joint missing, a mapped column the header lacks), wrong field
+// count, non-numeric or non-finite value, time not strictly increasing, an undeclared angle
+// beyond ±2π (with the hint to declare the units), fewer than 2 frames, and any sidecar
+// problem. Numbers are parsed locale-independently.
 JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements& requirements);
 
 // Writes the CSV and then the sidecar, each atomically (see write_file_atomically). Numbers

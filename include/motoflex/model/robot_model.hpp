@@ -57,7 +57,8 @@ struct JointSpec {
   Eigen::Vector3d anchor_W0_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d axis1_W0 = Eigen::Vector3d::UnitY();  // unit, world frame at build config
   Eigen::Vector3d axis2_W0 = Eigen::Vector3d::UnitX();  // second axis (universal, flex)
-  // Stops (URDF limits, unless robot.yaml says joint_stops: false); m for a slider.
+  // ODE stops (URDF limits, unless robot.yaml says joint_stops: false), m for a slider; infinite
+  // when the URDF joint is unlimited.
   double lower1_rad = -std::numeric_limits<double>::infinity();
   double upper1_rad = std::numeric_limits<double>::infinity();
   double lower2_rad = -std::numeric_limits<double>::infinity();
@@ -104,6 +105,9 @@ struct RobotModel {
   std::vector<JointSpec> joints;        // topological order: a parent body precedes its children
   std::vector<ActuatorSpec> actuators;  // log column order
   bool fixed_base = false;
+  // robot.yaml `joint_stops` (default true): false leaves the URDF limits out of the joints: no
+  // ODE stops, no limits in SDF/MJCF exports; ActuatorSpec keeps them for motion planners.
+  bool joint_stops = true;
   int root_body = 0;
   int torso_body = 0;
   Eigen::Matrix3d R_torsoBody_torsoLink = Eigen::Matrix3d::Identity();
@@ -111,7 +115,6 @@ struct RobotModel {
   double max_tilt_rad = 1.0;
   double min_torso_height_m = 0.0;
   double initial_clearance_m = 0.001;
-  bool joint_stops = true;  // URDF limits are ODE stops (robot.yaml joint_stops)
   // false: no ground plane (a robot mounted on a stand or table): nothing touches, nothing falls.
   bool ground = true;
   std::map<std::string, double> stand_pose_rad;  // actuated joint → angle (missing: 0)

@@ -9,11 +9,13 @@
 
 namespace motoflex {
 
-// The commanded angles of a joint log in model actuator order (the log keeps its own column
-// order). The log must be of `model`'s robot (when its sidecar says) and have a .cmd column per
-// actuated joint; its sidecar's per-log parameters (e.g. a bench's mass) are applied to
-// `parameters` and copied to `log_parameters`. `description` gets the sidecar's motion (or
-// "replay of PATH"). Throws InputError naming the file and field.
+// The commanded angles of a joint log, or of a 2011 MoToFlex command file (recognised by its
+// header, imported as motoflex/io/motoflex_command_file.hpp describes, original playback
+// clock), in model actuator order (the log keeps its own column order). The log must be of
+// `model`'s robot (when its sidecar says) and have a .cmd column per actuated joint; its sidecar's
+// per-log parameters (e.g. a bench's mass) are applied to `parameters` and copied to
+// `log_parameters`. `description` gets the sidecar's motion (or "replay of PATH"). Throws
+// InputError naming the file and field.
 CommandTrajectory read_log_commands(const RobotModel& model, const std::string& path,
                                     ParameterSet& parameters,
                                     std::map<std::string, double>& log_parameters,

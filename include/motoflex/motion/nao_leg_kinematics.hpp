@@ -50,6 +50,13 @@ struct NaoLegGeometry {
   // The same geometry with the joint limits of the model's actuators ("LHipRoll", ...); throws
   // std::invalid_argument if the model lacks one of the ten leg actuators.
   static NaoLegGeometry with_limits_of(const RobotModel& model);
+  // with_limits_of(model) with the model's own leg: hip_offset_y_m, thigh_m and tibia_m from the
+  // left leg's joint anchors, foot_height_m from the AnkleRoll anchor down to the lowest foot
+  // box corner, at the zero pose, each rounded to 1 nm (the URDFs give 0.1 mm; the rounding
+  // removes the last bits of the anchor differences, so the Nao's lengths come out as the
+  // defaults above, exactly). hip_offset_z_m stays: it places the torso frame, a convention.
+  // The 2011 MoToFlex box robot has tibia 0.100 m and foot height 0.046 m (nao.md §3.2).
+  static NaoLegGeometry of(const RobotModel& model);
 };
 
 using NaoLegAngles = std::array<double, 5>;  // rad, nao_leg::Joint order

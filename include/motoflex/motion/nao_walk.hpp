@@ -1,7 +1,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "motoflex/model/robot_model.hpp"
@@ -50,6 +53,15 @@ struct NaoWalkParams {
   // During single support the reference ZMP rolls forward by this much (centred on the offset
   // above; capped at the step length; not in the first and the closing step).
   double zmp_travel_x_m = 0.04;
+  // Shape of the reference ZMP's move from one foot to the other in each double support (and
+  // of the start and stop transfers): 0 moves it at constant speed, so it starts and stops with
+  // a jump in velocity, and the support torques change abruptly at the phase changes (the
+  // sudden change Aldebaran blames for the Nao's sideways problem, seed 001 §5); 1 moves it
+  // along a quintic smoothstep (zero velocity and acceleration at both ends); in between blends
+  // the two. The same path, only the timing along it changes. Toe-off waits until the ZMP has
+  // passed the rear toe edge, which comes later on a smoothstep: long steps reach less (200 mm/s
+  // at 2 s with toe-off and heel strike plans up to 197 mm/s at 0.5, 191 mm/s at 1).
+  double zmp_transfer_smoothing = 0.0;
   // Torso shifted forward of the CoM the mass model asks for (compensates what the cart-table
   // model leaves out).
   double torso_offset_x_m = 0.0;
@@ -66,6 +78,12 @@ struct NaoWalkParams {
   double heel_strike_rad = 0.0;
   double preview_s = 1.6;  // look-ahead of the ZMP preview controller (weights: nao_walk.cpp)
   bool first_swing_left = false;  // the right foot steps first
+
+  // The numeric options by their scenario key (speed_mm_s, step_duration_s, ...; every double
+  // above), for the scenario reader and option searches.
+  std::vector<std::pair<const char*, double*>> numeric_fields();
+  // The value of numeric option `key`; nullopt for an unknown key.
+  std::optional<double> numeric(std::string_view key) const;
 
   // Empty when the numbers are usable on their own (signs, ranges, time budget); otherwise one
   // line naming the parameter, its value and the limit. Reachability is checked by the planner.

@@ -8,6 +8,7 @@
 #include "motoflex/model/parameters.hpp"
 #include "motoflex/model/robot_model.hpp"
 #include "motoflex/motion/command_trajectory.hpp"
+#include "motoflex/motion/nao_walk.hpp"
 #include "motoflex/sim/rollout.hpp"
 
 namespace motoflex {
@@ -44,11 +45,19 @@ struct Scenario {
   // mass and gain); they are already applied to `parameters` and travel on into logs recorded
   // from this scenario.
   std::map<std::string, double> log_parameters;
+  // The plan behind a `walk` motion (footsteps, reference ZMP, steady window); null otherwise.
+  std::shared_ptr<const NaoWalkPlan> walk_plan;
 };
 
 // Command-line replacements applied while loading (they win over the file).
 struct ScenarioOverrides {
-  std::optional<std::string> motion_log;       // --motion LOG.csv
+  std::optional<std::string> motion_log;  // --motion LOG.csv
+  // The `motion:` section of this scenario file instead of the scenario's own (its relative
+  // paths resolve against that file); the motion is planned for the scenario's robot.
+  std::optional<std::string> motion_scenario;
+  // Replace these numeric keys of a `walk` motion (e.g. zmp_offset_y_m); an InputError names a
+  // key that is not one.
+  std::map<std::string, double> walk_options;
   std::optional<std::string> parameters_json;  // --params P.json
   std::optional<StepSolver> solver;            // --solver step|quick
   std::optional<std::string> servo;            // --servo (a servo law's name)

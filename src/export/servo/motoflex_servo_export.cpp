@@ -1,5 +1,6 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/export/servo_export.hpp"
+#include "motoflex/sim/actuator/servo_stages.hpp"
 
 namespace motoflex {
 namespace {
@@ -22,7 +23,8 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
   a.damping_nm_s_per_rad = get(joint + "viscous_nm_s_per_rad") + back_emf_damping;
   a.friction_nm = get(joint + "friction_nm");
   a.reduction = ratio;
-  a.armature_kg_m2 = get(gear + "mass_kg_m2");
+  // The gear's small mass and the rotor's reflected inertia both act as joint-side inertia.
+  a.armature_kg_m2 = get(gear + "mass_kg_m2") + get(armature_parameter_name(spec.name));
 }
 
 }  // namespace

@@ -8,9 +8,11 @@
 
 namespace motoflex::detail {
 
-inline double stiff_servo_kv_nm_s_per_rad(const ExportInput& input, std::size_t actuator) {
+inline double stiff_servo_kv_nm_s_per_rad(const ExportInput& input, std::size_t actuator,
+                                          double armature_kg_m2) {
   constexpr double kStiffServoInertiaSteps = 5.0;
-  return kStiffServoInertiaSteps * subtree_inertia_kg_m2(input.model, actuator) / input.dt_s;
+  return kStiffServoInertiaSteps * (subtree_inertia_kg_m2(input.model, actuator) + armature_kg_m2) /
+         input.dt_s;
 }
 
 }  // namespace motoflex::detail

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
 
 namespace motoflex {
@@ -12,7 +13,7 @@ namespace {
 
 class BenchServoLaw final : public ServoLaw {
  public:
-  BenchServoLaw(BenchServoParams params, JointFrictionParams friction, double drift_per_s)
+  BenchServoLaw(BenchServoParams params, FrictionParams friction, double drift_per_s)
       : params_(params), friction_(friction), resistance_drift_per_s_(drift_per_s) {}
 
   ServoOutput step(const ServoInput& in) override {
@@ -29,7 +30,7 @@ class BenchServoLaw final : public ServoLaw {
 
  private:
   BenchServoParams params_;
-  JointFrictionParams friction_;
+  FrictionParams friction_;
   double resistance_drift_per_s_;
 };
 
@@ -40,7 +41,10 @@ const char* const kBenchNames[] = {
 
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   std::vector<std::string> out(std::begin(kBenchNames), std::end(kBenchNames));
-  for (auto& name : joint_friction_parameter_names(model.actuators[actuator].name)) {
+  // The friction the bench always had (Coulomb, viscous, Stribeck, K_m·|τ_m|); the arm's point
+  // mass carries the armature (bench.armature_kg_m2), so joint.<J>.armature_kg_m2 is not read.
+  for (auto& name :
+       friction_parameter_names(model.actuators[actuator].name, FrictionTerms::kMotorLoad)) {
     out.push_back(std::move(name));
   }
   out.emplace_back("motor.R_drift_per_s");
@@ -59,8 +63,8 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   bench.torque_off_s = get("bench.torque_off_s");
   if (!(bench.resistance_ohm > 0.0)) throw ModelError("bench.R_ohm must be positive");
   if (bench.max_duty < 0.0) throw ModelError("bench.max_duty must not be negative");
-  const JointFrictionParams friction =
-      read_joint_friction(get, setup.model.actuators[setup.actuator].name);
+  const FrictionParams friction =
+      read_friction(get, setup.model.actuators[setup.actuator].name, FrictionTerms::kMotorLoad);
   return std::make_unique<BenchServoLaw>(bench, friction, get("motor.R_drift_per_s"));
 }
 
@@ -84,7 +88,7 @@ std::vector<ParameterDefault> defaults(const RobotModel&, std::size_t, const Joi
 ServoLawInfo bench_servo_law_info() {
   ServoLawInfo info{"bench", "the pendulum bench's voltage P servo (BAM eq. 12-13)", names, create};
   info.point_mass_arm = true;
-  info.default_parameters = defaults;
+  info.init_defaults = defaults;
   return info;
 }
 

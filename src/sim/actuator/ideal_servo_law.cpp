@@ -1,5 +1,7 @@
 // `servo: ideal` — a position servo that reaches the next commanded angle in one physics step,
 // within a torque limit (the rigid reference runs of seed 001 and the exporters' "ideal" mode).
+// No joint friction: the servo overrides it by definition. The armature shows when the torque
+// limit is reached.
 
 #include "motoflex/sim/actuator/servo_stages.hpp"
 
@@ -8,16 +10,19 @@ namespace {
 
 class IdealServoLaw final : public ServoLaw {
  public:
-  IdealServoLaw(IdealServoParams params, double dt_s) : params_(params), dt_s_(dt_s) {}
+  IdealServoLaw(IdealServoParams params, double dt_s, double armature_kg_m2)
+      : params_(params), dt_s_(dt_s), armature_kg_m2_(armature_kg_m2) {}
   ServoOutput step(const ServoInput& in) override {
     ServoOutput out;
     out.row = ideal_servo(params_, in.next_command_rad, in.angle_rad, dt_s_);
     return out;
   }
+  double armature_kg_m2() const override { return armature_kg_m2_; }
 
  private:
   IdealServoParams params_;
   double dt_s_;
+  double armature_kg_m2_;
 };
 
 // One robot-wide limit per kind of joint: a torque for hinges, a force for sliders.
@@ -26,12 +31,13 @@ std::string limit_name(const RobotModel& model, std::size_t actuator) {
 }
 
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
-  return {limit_name(model, actuator)};
+  return {limit_name(model, actuator), armature_parameter_name(model.actuators[actuator].name)};
 }
 
 std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   return std::make_unique<IdealServoLaw>(
-      IdealServoParams{setup.get(limit_name(setup.model, setup.actuator))}, setup.dt_s);
+      IdealServoParams{setup.get(limit_name(setup.model, setup.actuator))}, setup.dt_s,
+      read_armature_kg_m2(setup.get, setup.model.actuators[setup.actuator].name));
 }
 
 // TITAN-VIII's and the Nao's reference runs use 100 and 20 N·m; a stiff reference servo
@@ -50,7 +56,7 @@ ServoLawInfo ideal_servo_law_info() {
   ServoLawInfo info{"ideal", "reaches the next commanded angle in one step, torque-limited", names,
                     create};
   info.drives_prismatic = true;
-  info.default_parameters = defaults;
+  info.init_defaults = defaults;
   return info;
 }
 

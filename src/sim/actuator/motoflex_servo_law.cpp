@@ -9,6 +9,7 @@
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/sim/actuator/dc_motor.hpp"
+#include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/gear_train.hpp"
 #include "motoflex/sim/actuator/pid.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
@@ -20,7 +21,8 @@ struct MotoflexServoParams {
   PidGains pid;
   DcMotorParams motor;
   GearParams gear;
-  JointFrictionParams friction;
+  FrictionParams friction;
+  double armature_kg_m2 = 0.0;                 // reflected rotor inertia, the rollout's inertia row
   double back_emf_damping_nm_s_per_rad = 0.0;  // B·σ², applied by the rollout's damper row
   // Robot-wide motor effects: R(t) = R·(1 + drift·t) as the windings heat up, and a battery
   // with internal resistance: U_bat(t) = U_bat − R_int·Σ|I| over all motors.
@@ -55,6 +57,7 @@ class MotoflexServoLaw final : public ServoLaw {
   }
   double damping_row_nm_s_per_rad() const override { return params_.back_emf_damping_nm_s_per_rad; }
   double current_a() const override { return motor_.current_a(); }
+  double armature_kg_m2() const override { return params_.armature_kg_m2; }
 
  private:
   MotoflexServoParams params_;
@@ -75,7 +78,10 @@ std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   const ActuatorSpec& spec = model.actuators[actuator];
   std::vector<std::string> out(std::begin(kMotorNames), std::end(kMotorNames));
   for (const char* leaf : kGearLeaves) out.push_back("gear." + spec.group + "." + leaf);
-  for (auto& name : joint_friction_parameter_names(spec.name)) out.push_back(std::move(name));
+  for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kMotorLoad)) {
+    out.push_back(std::move(name));
+  }
+  out.push_back(armature_parameter_name(spec.name));
   out.emplace_back("motor.R_drift_per_s");
   out.emplace_back("motor.supply_sag_ohm");
   return out;
@@ -98,7 +104,8 @@ MotoflexServoParams read_params(const ServoLawSetup& setup) {
   p.gear.spring_nm_per_rad = get(gear + "spring_nm_per_rad");
   p.gear.mass_kg_m2 = get(gear + "mass_kg_m2");
   p.gear.viscous_nm_s_per_rad = get(gear + "viscous_nm_s_per_rad");
-  p.friction = read_joint_friction(get, spec.name);
+  p.friction = read_friction(get, spec.name, FrictionTerms::kMotorLoad);
+  p.armature_kg_m2 = read_armature_kg_m2(get, spec.name);
   // Algorithm 1's B·ω_m reaches the joint as B·σ²·ω. Applied as an explicit torque it is
   // unstable at 1 ms on light links (B·σ²·dt/I > 2 at the Nao's ankles), so the rollout
   // integrates it implicitly: a zero-velocity motor row with unbounded force and
@@ -151,7 +158,7 @@ ServoLawInfo motoflex_servo_law_info() {
                     "seed 001: PID -> DC motor -> gear train (backlash, spring) -> joint, dry "
                     "friction",
                     names, create};
-  info.default_parameters = defaults;
+  info.init_defaults = defaults;
   return info;
 }
 

@@ -10,13 +10,15 @@ ServoLawInfo motoflex_servo_law_info();
 ServoLawInfo velocity_servo_law_info();
 ServoLawInfo ideal_servo_law_info();
 ServoLawInfo bench_servo_law_info();
+ServoLawInfo pd_torque_servo_law_info();
+ServoLawInfo dynamixel_servo_law_info();
+ServoLawInfo feetech_servo_law_info();
 
 const std::vector<ServoLawInfo>& servo_laws() {
   static const std::vector<ServoLawInfo> laws = {
-      motoflex_servo_law_info(),
-      velocity_servo_law_info(),
-      ideal_servo_law_info(),
-      bench_servo_law_info(),
+      motoflex_servo_law_info(), velocity_servo_law_info(),  ideal_servo_law_info(),
+      bench_servo_law_info(),    pd_torque_servo_law_info(), dynamixel_servo_law_info(),
+      feetech_servo_law_info(),
   };
   return laws;
 }
@@ -44,6 +46,21 @@ const std::string& actuator_servo_name(const RobotModel& model, const std::strin
   if (!override_servo.empty()) return override_servo;
   const std::string& own = model.actuators.at(actuator).servo;
   return own.empty() ? model.default_servo : own;
+}
+
+std::vector<std::string> add_servo_law_defaults(RobotModel& model,
+                                                const std::string& override_servo) {
+  std::vector<std::string> added;
+  for (std::size_t a = 0; a < model.actuators.size(); ++a) {
+    const ServoLawInfo& law = servo_law(actuator_servo_name(model, override_servo, a));
+    if (law.default_parameters == nullptr) continue;
+    for (ParameterSpec& spec : law.default_parameters(model, a)) {
+      if (model.parameters.contains(spec.name)) continue;
+      added.push_back(spec.name);
+      model.parameters.add(std::move(spec));
+    }
+  }
+  return added;
 }
 
 double ParameterReader::operator()(const std::string& name) const {

@@ -38,62 +38,40 @@ double bench_servo_torque_nm(const BenchServoParams& params, double commanded_ra
   return kt * voltage_v / params.resistance_ohm - kt * kt * velocity_rad_s / params.resistance_ohm;
 }
 
-MotorCommand joint_friction(const JointFrictionParams& params, double velocity_rad_s,
-                            double load_torque_nm) {
-  // A zero-velocity motor row with a bounded force is ODE's way to express stiction: the joint
-  // is held while the holding torque fits in the budget, and slides once it does not.
-  double budget_nm = params.coulomb_nm + params.viscous_nm_s_per_rad * std::abs(velocity_rad_s);
-  if (params.stribeck_nm != 0.0) {
-    const double u = velocity_rad_s / params.stribeck_velocity_rad_s;
-    budget_nm += params.stribeck_nm * std::exp(-u * u);
+std::string servo_parameter_prefix(const ActuatorSpec& actuator) {
+  return "servo." + (actuator.servo_scope.empty() ? actuator.name : actuator.servo_scope) + ".";
+}
+
+double clip_torque_speed_nm(double torque_nm, double velocity_rad_s, double torque_max_nm,
+                            double no_load_speed_rad_s) {
+  double upper_nm = torque_max_nm;
+  double lower_nm = -torque_max_nm;
+  if (no_load_speed_rad_s > 0.0) {
+    const double slope = velocity_rad_s / no_load_speed_rad_s;
+    upper_nm = std::min(torque_max_nm, std::max(0.0, torque_max_nm * (1.0 - slope)));
+    lower_nm = std::max(-torque_max_nm, std::min(0.0, torque_max_nm * (-1.0 - slope)));
   }
-  budget_nm += params.load_coefficient * std::abs(load_torque_nm);
-  return MotorCommand{0.0, budget_nm};
+  // min/max rather than std::clamp, which is undefined for a (bad) lower > upper.
+  return std::min(std::max(torque_nm, lower_nm), upper_nm);
+}
+
+std::string armature_parameter_name(const std::string& joint) {
+  return "joint." + joint + ".armature_kg_m2";
+}
+
+double read_armature_kg_m2(const ParameterReader& get, const std::string& joint) {
+  const double armature_kg_m2 = get(armature_parameter_name(joint));
+  if (armature_kg_m2 < 0.0) throw ModelError(armature_parameter_name(joint) + " must be >= 0");
+  return armature_kg_m2;
 }
 
 namespace {
-
-JointFrictionParams read_friction_names(const ParameterReader& get,
-                                        const std::vector<std::string>& names,
-                                        const std::string& prefix) {
-  JointFrictionParams friction;
-  friction.coulomb_nm = get(names[0]);
-  friction.viscous_nm_s_per_rad = get(names[1]);
-  friction.stribeck_nm = get(names[2]);
-  friction.stribeck_velocity_rad_s = get(names[3]);
-  friction.load_coefficient = get(names[4]);
-  if (friction.coulomb_nm < 0.0 || friction.viscous_nm_s_per_rad < 0.0 ||
-      friction.stribeck_nm < 0.0 || !(friction.stribeck_velocity_rad_s > 0.0) ||
-      friction.load_coefficient < 0.0) {
-    throw ModelError("friction parameters of " + prefix + "* must not be negative (" + names[3] +
-                     " > 0)");
-  }
-  return friction;
-}
 
 double finite_or(double value, double fallback) {
   return std::isfinite(value) && value >= 0.0 ? value : fallback;
 }
 
 }  // namespace
-
-JointFrictionParams read_joint_friction(const ParameterReader& get, const std::string& joint) {
-  return read_friction_names(get, joint_friction_parameter_names(joint), "joint." + joint + ".");
-}
-
-JointFrictionParams read_joint_friction(const ParameterReader& get, const ActuatorSpec& joint) {
-  return read_friction_names(get, joint_friction_parameter_names(joint),
-                             "joint." + joint.name + ".");
-}
-
-std::vector<std::string> joint_friction_parameter_names(const ActuatorSpec& joint) {
-  const JointUnits u = joint_units(joint);
-  return {joint_parameter(joint, "friction", u.effort),
-          joint_parameter(joint, "viscous", u.damping),
-          joint_parameter(joint, "stribeck", u.effort),
-          joint_parameter(joint, "stribeck_velocity", u.velocity),
-          "joint." + joint.name + ".load_friction"};
-}
 
 std::vector<ParameterDefault> joint_friction_defaults(const ActuatorSpec& joint,
                                                       const JointHints& hints) {
@@ -109,12 +87,6 @@ std::vector<ParameterDefault> joint_friction_defaults(const ActuatorSpec& joint,
   };
   return {entry(joint_parameter(joint, "friction", u.effort), hints.friction, "friction"),
           entry(joint_parameter(joint, "viscous", u.damping), hints.damping, "damping")};
-}
-
-std::vector<std::string> joint_friction_parameter_names(const std::string& joint) {
-  const std::string prefix = "joint." + joint + ".";
-  return {prefix + "friction_nm", prefix + "viscous_nm_s_per_rad", prefix + "stribeck_nm",
-          prefix + "stribeck_velocity_rad_s", prefix + "load_friction"};
 }
 
 }  // namespace motoflex

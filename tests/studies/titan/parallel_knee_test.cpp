@@ -1,5 +1,9 @@
 // Seed 000 eq. 1: the serial ↔ parallel-link knee conversion, checked against finite
-// differences of the TITAN-VIII leg kinematics in both coordinate sets.
+// differences of the TITAN-VIII leg kinematics in both coordinate sets. The parallel-link
+// coordinates come from an independent model of the four-bar (Fig. 2b): a crank at the thigh
+// joint, turned by the knee actuator from the vertical, and a coupler as long as the thigh,
+// closed by solving the loop for the shank — not from the substitution θ3p = θ2 + θ3 that the
+// code under test implements.
 
 #include <gtest/gtest.h>
 
@@ -26,10 +30,49 @@ Eigen::Vector3d ankle_serial(const Eigen::Vector3d& q) {
   return titan_leg_points(fl_geometry(), {q.x(), q.y(), q.z(), 0.0}).ankle_m;
 }
 
-// The same point in parallel-link coordinates θ_p = (θ1, θ2, θ3p) with θ3p the shank's
-// absolute angle: the four-bar's own forward kinematics, knee relative angle θ3p − θ2.
+// The four-bar (Fig. 2b): the knee actuator at the thigh joint T turns a crank of length r to
+// the angle γ from the downward vertical, about the J2/J3 axis; a coupler as long as the thigh
+// links the crank tip C to the point S on the shank, r below the knee K. Given γ,
+// the loop |S(q3) − C(γ)| = |K − T| fixes the serial knee angle q3 (Newton's method on the
+// branch that starts at the crank's own angle), and the ankle follows from the serial leg.
+constexpr double kCrank_m = 0.04;
+
+Eigen::Vector3d rotate_about(const Eigen::Vector3d& v, const Eigen::Vector3d& axis, double a) {
+  return Eigen::AngleAxisd(a, axis.normalized()) * v;
+}
+
+double four_bar_knee_angle(const Eigen::Vector3d& p) {
+  const TitanLegGeometry& g = fl_geometry();
+  const auto points = [&](double q3) { return titan_leg_points(g, {p.x(), p.y(), q3, 0.0}); };
+  const TitanLegPoints at_zero = points(0.0);
+  const double heading = g.zero_heading_rad + p.x();
+  const Eigen::Vector3d out(std::cos(heading), std::sin(heading), 0.0);
+  const Eigen::Vector3d axis = out.cross(Eigen::Vector3d::UnitZ());  // J2, J3 axis
+  const Eigen::Vector3d crank_tip =
+      at_zero.thigh_m + kCrank_m * rotate_about(-Eigen::Vector3d::UnitZ(), axis, p.z());
+  const double coupler_m = (at_zero.knee_m - at_zero.thigh_m).norm();
+  // Closure residual: |S − C| − coupler, with S on the shank's extension above the knee.
+  const auto residual = [&](double q3) {
+    const TitanLegPoints leg = points(q3);
+    const Eigen::Vector3d shank_down = (leg.ankle_m - leg.knee_m).normalized();
+    return (leg.knee_m + kCrank_m * shank_down - crank_tip).norm() - coupler_m;
+  };
+  // Start where the shank hangs vertically (q3 = −q2) and let Newton find the closure.
+  double q3 = -p.y();
+  for (int k = 0; k < 50; ++k) {
+    constexpr double h = 1e-7;
+    const double f = residual(q3);
+    const double slope = (residual(q3 + h) - residual(q3 - h)) / (2 * h);
+    const double step = f / slope;
+    q3 -= step;
+    if (std::abs(step) < 1e-14) break;
+  }
+  return q3;
+}
+
+// The ankle in parallel-link coordinates θ_p = (θ1, θ2, γ), through the four-bar above.
 Eigen::Vector3d ankle_parallel(const Eigen::Vector3d& p) {
-  return titan_leg_points(fl_geometry(), {p.x(), p.y(), p.z() - p.y(), 0.0}).ankle_m;
+  return titan_leg_points(fl_geometry(), {p.x(), p.y(), four_bar_knee_angle(p), 0.0}).ankle_m;
 }
 
 template <typename F>
@@ -61,6 +104,16 @@ TEST(ParallelKnee, AnalyticSerialJacobianMatchesFiniteDifferences) {
       points.ankle_m);
   const Eigen::Matrix3d numeric = finite_difference_jacobian(ankle_serial, kSerialAngles);
   EXPECT_LT((analytic - numeric).cwiseAbs().maxCoeff(), 1e-8) << analytic << "\n" << numeric;
+}
+
+TEST(ParallelKnee, TheFourBarKeepsTheShankParallelToTheCrank) {
+  // An independent check of the coordinate map: the loop closure, solved numerically, gives
+  // the serial knee angle γ − θ2 (the parallelogram keeps the shank parallel to the crank). The
+  // Newton solve converges to ~1e-12 rad here.
+  for (const double gamma : {-0.3, 0.0, 0.17, 0.4}) {
+    const Eigen::Vector3d p(kSerialAngles.x(), kSerialAngles.y(), gamma);
+    EXPECT_NEAR(four_bar_knee_angle(p), gamma - kSerialAngles.y(), 1e-9) << gamma;
+  }
 }
 
 TEST(ParallelKnee, ParallelJacobianMatchesFiniteDifferencesOfTheFourBar) {

@@ -37,6 +37,10 @@ struct ServoInput {
   double settle_s = 0.0;          // the settling time before the motion's t = 0
   // Σ|I| of every law of the robot after the previous step (A): a shared battery sags with it.
   double total_current_a = 0.0;
+  // The gravity torque on everything the joint moves, about its axis (N·m, our sign): the
+  // external torque τ_e of BAM's load-dependent friction (friction_family.hpp). Computed only
+  // for a law whose needs_external_torque() is true; 0 otherwise.
+  double external_torque_nm = 0.0;
 };
 
 // What a law applies to its joint during the step.
@@ -45,6 +49,9 @@ struct ServoOutput {
   // the rollout reports the actuator torque as unknown).
   double torque_nm = std::numeric_limits<double>::quiet_NaN();
   MotorCommand row;  // the axis's motor row for this step
+  // Joint friction for a law whose `row` drives the joint (has_friction_row()): a second,
+  // zero-velocity row on the axis with this budget.
+  MotorCommand friction_row;
 };
 
 // One actuator's servo in one rollout.
@@ -59,6 +66,14 @@ class ServoLaw {
   virtual double damping_row_nm_s_per_rad() const { return 0.0; }
   // The current the law draws from the robot's supply (A), for supply effects.
   virtual double current_a() const { return 0.0; }
+  // Reflected rotor inertia on the axis (kg·m², 0 = none), which the rollout adds as a
+  // joint-space inertia row (rollout.cpp, add_inertia_row). Asked once, when the rollout is built.
+  virtual double armature_kg_m2() const { return 0.0; }
+  // Whether step() reads ServoInput::external_torque_nm. Asked once, when the rollout is built.
+  virtual bool needs_external_torque() const { return false; }
+  // Whether the rollout must give the axis a second motor row for ServoOutput::friction_row.
+  // Asked once, when the rollout is built.
+  virtual bool has_friction_row() const { return false; }
 };
 
 // Reads parameter values by name for a law being set up. A name the robot does not declare is
@@ -118,11 +133,16 @@ struct ServoLawInfo {
   // Whether the law can drive a prismatic joint (its parameters then in m and N).
   bool drives_prismatic = false;
   // Starting value and bounds of every name `parameter_names` lists for one actuator (laws
-  // without it leave init-robot to flag each name). Names shared with other laws (joint
-  // friction, ...) may be left out: joint_friction_defaults (servo_stages.hpp) and the
-  // rollout's own table (robot_parameter_defaults.hpp) give them.
-  std::vector<ParameterDefault> (*default_parameters)(const RobotModel& model, std::size_t actuator,
-                                                      const JointHints& hints) = nullptr;
+  // without it fall back on default_parameters, else init-robot flags each name). Names shared with
+  // other laws (joint friction, ...) may be left out: joint_friction_defaults (servo_stages.hpp)
+  // and the rollout's own table (robot_parameter_defaults.hpp) give them.
+  std::vector<ParameterDefault> (*init_defaults)(const RobotModel& model, std::size_t actuator,
+                                                 const JointHints& hints) = nullptr;
+  // Default value and search bounds of the law's own parameters for one actuator (the
+  // `servo.<scope>.*` names; joint.* names have theirs in the model's parameter catalog), for
+  // robots that do not declare them. nullptr = the law has no defaults: the robot declares all.
+  std::vector<ParameterSpec> (*default_parameters)(const RobotModel& model,
+                                                   std::size_t actuator) = nullptr;
 };
 
 // Every law, in registration order.
@@ -138,5 +158,11 @@ std::string servo_law_names();
 // default (robot.yaml `servo:`).
 const std::string& actuator_servo_name(const RobotModel& model, const std::string& override_servo,
                                        std::size_t actuator);
+// Adds to `model` the default of every parameter that the law of each actuator (as
+// actuator_servo_name resolves it with `override_servo`) lists in default_parameters and the
+// model does not declare. Returns the names added. Throws std::invalid_argument for an unknown
+// law. (For robots built in code and for tests; robot.yaml files declare their parameters.)
+std::vector<std::string> add_servo_law_defaults(RobotModel& model,
+                                                const std::string& override_servo = "");
 
 }  // namespace motoflex

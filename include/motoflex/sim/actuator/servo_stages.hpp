@@ -42,31 +42,25 @@ struct BenchServoParams {
 double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
                              double measured_rad, double velocity_rad_s, bool torque_enabled);
 
-// Joint friction as a budget for a zero-velocity ODE motor (seed 001 §2; BAM's clipping
-// friction models M1–M4): the motor row holds the joint still with up to
-//   fmax = F_c + F_s·exp(−(θ̇/v_s)²) + K_v·|θ̇| + K_l·|τ_load|
-// so the joint sticks while the other torques stay below fmax and slips above it. F_s is the
-// Stribeck (stiction) excess at rest, v_s its velocity scale; K_l makes the friction grow with
-// the torque the gear transmits (load-dependent friction, bam.md §2d). ODE applies the budget
-// implicitly: it opposes the motion but can never reverse it.
-struct JointFrictionParams {
-  double coulomb_nm = 0.0;               // F_c
-  double viscous_nm_s_per_rad = 0.0;     // K_v
-  double stribeck_nm = 0.0;              // F_s
-  double stribeck_velocity_rad_s = 0.1;  // v_s (> 0)
-  double load_coefficient = 0.0;         // K_l, N·m of friction per N·m transmitted
-};
-MotorCommand joint_friction(const JointFrictionParams& params, double velocity_rad_s,
-                            double load_torque_nm = 0.0);
-// Reads joint.<joint>.{friction_nm, viscous_nm_s_per_rad, stribeck_nm, stribeck_velocity_rad_s,
-// load_friction}. Throws ModelError for a negative value or a non-positive Stribeck velocity.
-JointFrictionParams read_joint_friction(const ParameterReader& get, const std::string& joint);
-// The names read_joint_friction reads, in its order.
-std::vector<std::string> joint_friction_parameter_names(const std::string& joint);
-// The same for any actuated joint: a prismatic joint's names are in N and m
-// (joint.<J>.friction_n, viscous_n_s_per_m, stribeck_n, stribeck_velocity_m_s, load_friction).
-JointFrictionParams read_joint_friction(const ParameterReader& get, const ActuatorSpec& joint);
-std::vector<std::string> joint_friction_parameter_names(const ActuatorSpec& joint);
+// "servo.<scope>." for a law's own per-joint or per-group parameters (ActuatorSpec::servo_scope;
+// the joint's name when the scope is empty).
+std::string servo_parameter_prefix(const ActuatorSpec& actuator);
+
+// A torque servo's limits (pd_torque): ±τ_max, and with a no-load speed ω₀ > 0 the DC motor's
+// linear torque–speed curve: the torque along the motion falls to 0 at θ̇ = ω₀ (upper limit
+// τ_max·(1 − θ̇/ω₀) clipped to [0, τ_max], lower limit τ_max·(−1 − θ̇/ω₀) clipped to [−τ_max, 0]),
+// while braking against the motion keeps τ_max. ω₀ = 0: no curve.
+double clip_torque_speed_nm(double torque_nm, double velocity_rad_s, double torque_max_nm,
+                            double no_load_speed_rad_s);
+
+// joint.<J>.armature_kg_m2: the reflected rotor inertia J_rotor·σ² of a joint, which the rollout
+// adds as joint-space inertia (ServoLaw::armature_kg_m2). Throws ModelError when negative.
+std::string armature_parameter_name(const std::string& joint);
+double read_armature_kg_m2(const ParameterReader& get, const std::string& joint);
+
+// Joint friction (a budget for a zero-velocity ODE motor, BAM's M1–M6) is in
+// friction_family.hpp.
+
 // Starting values of joint.<J>.friction and .viscous for a new robot folder: the URDF's
 // <dynamics friction damping> or 0, searched in [0, max(1, effort/2, 5·start)] (N·m or N;
 // N·m·s/rad or N·s/m) with effort the URDF's limit when it has one.

@@ -38,12 +38,4 @@ class FitProblem final : public motoflex_es::Problem {
 // The strategy a fit config asks for, seeded with the config's seed.
 std::unique_ptr<motoflex_es::Strategy> make_strategy(const FitConfig& config);
 
-// Runs (or, with resume, continues) a fit into config.out_dir: checkpoint.json after every
-// generation, generations.csv, best.json, summary.json, best/ logs and PNG plots. SIGINT and
-// SIGTERM end the run after the current generation with its checkpoint written. Throws
-// InputError for an unusable run dir (exists without resume, unwritable, checkpoint of another
-// config, corrupt checkpoint). `evaluator` null: serial or OpenMP by config.threads. Returns
-// the process exit code.
-int run_fit(const FitConfig& config, bool resume, motoflex_es::Evaluator* evaluator = nullptr);
-
 }  // namespace motoflex

@@ -1,0 +1,163 @@
+#pragma once
+
+// FitSpec: everything a fit is asked to do, as a user writes it (fit.yaml, or built in code by
+// a program or the Python module), before any file it names is read. Modelled on Ceres's
+// Solver::Options (and named like es/'s option structs): each field carries its default and
+// what it does; is_valid() (Ceres's IsValid) says what is
+// wrong without touching the disk. `resolve_fit_config` (fit_config.hpp) then loads the
+// scenario, robot and logs it names; FitSession (fit_session.hpp) runs it.
+//
+// The fit.yaml keys map one to one onto the fields (see scenarios/fit/nao_quick.yaml):
+//   name: nao_quick
+//   scenario: ../nao_fit_base.yaml      # robot, servo, physics (its motion, if any, is unused)
+//   data: ../../reference_data/nao/train   # a folder of logs, a file, or a list (or `logs:`)
+//   validation: ../../reference_data/nao/validation   # optional, never fitted on
+//   free:                               # name or pattern ('*' within a dotted level)
+//     motor.R_ohm: {lower: 3, upper: 12, log: true}
+//     joint.*.friction_nm: {lower: 0.01, upper: 3, log: true}        # one tied value
+//     gear.*.backlash_rad: {lower: 1e-7, upper: 1e-2, each: true}    # one value per match
+//   fixed: {motor.stiffness: 0.7}      # values on top of the robot defaults
+//   effects: [stribeck, sensor_delay]  # frees each effect's parameters (effect_library.hpp)
+//   fitness: {m: 2, settle_s: 0.0, weights: {LKneePitch: 2.0}, imu_weight: 0, window_s: 0,
+//             early_termination: true}
+//   strategy: {kind: mu_plus_lambda, mu: 10, lambda: 40, kappa: 3}
+//   budget: {generations: 30, evaluations: 2000, seconds: 600}
+//   threads: 2
+//   seed: 1
+//   out: ../../runs/nao_quick
+//   loop: {candidates: 3, max_iterations: 3, min_gain: 0.05, effects: [...],
+//          refit: {strategy: {kind: cma_es, sigma: 0.1}, budget: {evaluations: 240}}}
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace motoflex {
+
+// Where a value of a spec was written (for messages); empty for values set in code.
+struct SourceRef {
+  std::string file;
+  int line = 0;
+  std::string field;
+};
+
+// Which optimiser a fit runs, with its options (the es library's option structs are filled
+// from these).
+struct StrategyConfig {
+  std::string kind = "mu_plus_lambda";  // mu_plus_lambda | cma_es | nlopt
+  // mu_plus_lambda (seed 001: mu 10, lambda 800, kappa 3)
+  std::size_t mu = 10;
+  std::size_t lambda = 40;
+  std::uint64_t kappa = 3;  // 0 = unlimited (plus selection)
+  std::size_t rho = 2;
+  std::string object_recombination = "discrete";    // none | discrete | intermediate
+  std::string step_recombination = "intermediate";  // none | discrete | intermediate
+  double initial_step = 0.1;                        // relative to each bound width
+  // cma_es
+  double sigma = 0.25;  // relative to the bound widths
+  std::size_t population = 0;
+  std::size_t restarts = 9;
+  // nlopt: bobyqa | sbplx | crs2_lm | isres | esch
+  std::string algorithm = "bobyqa";
+  // optional local polish of the best point after the main strategy (nlopt local algorithm)
+  std::string polish;  // "" = none, bobyqa | sbplx
+  std::uint64_t polish_evaluations = 0;
+};
+
+struct FitBudget {
+  std::uint64_t max_generations = 0;  // 0 = no limit
+  std::uint64_t max_evaluations = 0;  // 0 = no limit
+  double max_seconds = 0.0;           // 0 = no limit
+};
+
+// What `motoflex loop` does with a fit (the `loop:` section; plain fits ignore it).
+struct LoopOptions {
+  std::size_t candidates = 3;      // top-ranked effects refit per iteration
+  std::size_t max_iterations = 3;  // effects added at most
+  // A candidate is added only if it lowers the validation RMS (over the fitness's channels:
+  // the joints, and the IMU when it is scored) by at least this fraction and its validation
+  // BIC (n·ln MSE + k·ln n, over the same channels) beats the current model's.
+  double min_gain = 0.05;
+  std::vector<std::string> effects;  // candidates considered (empty: the whole library)
+  StrategyConfig refit_strategy;     // the short warm-started refits
+  FitBudget refit_budget;
+  LoopOptions() {
+    refit_strategy.kind = "cma_es";
+    refit_strategy.sigma = 0.1;
+    refit_strategy.restarts = 0;
+    refit_budget.max_evaluations = 240;
+  }
+};
+
+// One `free:` entry: a model parameter name or pattern and how it is searched.
+struct FreeParameterSpec {
+  std::string pattern;          // a name, or '*' within one dotted level, "**" across levels
+  std::optional<double> lower;  // default: the robot's bound of the first match
+  std::optional<double> upper;
+  std::optional<double> start;  // default: the base value (robot default + fixed + scenario)
+  bool log_scale = false;       // search log(value)
+  bool each = false;            // one free value per matched parameter instead of one tie
+  SourceRef where;
+};
+
+// A `data:` / `validation:` item: a folder of logs (every *.csv; a folder of BAM JSON logs is
+// imported into <out>/imported/), or one log file.
+struct LogSource {
+  std::string path;
+  SourceRef where;
+};
+
+// Command-line replacements (they win over the file).
+struct FitOverrides {
+  std::optional<int> threads;
+  std::optional<std::uint64_t> seed;
+  std::optional<std::uint64_t> max_generations;
+  std::optional<std::uint64_t> max_evaluations;
+  std::optional<double> max_seconds;
+  std::optional<std::string> out;
+  std::optional<std::string> data;
+  std::optional<std::string> validation;
+};
+
+struct FitSpec {
+  std::string path;                        // the fit.yaml it was read from ("" when built in code)
+  std::string name;                        // run name (default: the file stem)
+  std::string scenario_path;               // required: robot, servo and physics of every rollout
+  std::vector<LogSource> train_data;       // required: the logs fitted on
+  std::vector<LogSource> validation_data;  // optional: scored, never fitted on
+  std::vector<FreeParameterSpec> free;     // required: what the optimiser searches
+  // Values on top of the robot's defaults and the scenario's `parameters`, in order.
+  std::vector<std::pair<std::string, double>> fixed;
+  std::vector<SourceRef> fixed_where;           // parallel to `fixed`
+  std::vector<std::string> effects;             // library effects whose parameters go free
+  std::vector<SourceRef> effects_where;         // parallel to `effects`
+  double fitness_m = 2.0;                       // F = Σ error² / T^m (seed 001 eq. 2), m ≥ 0
+  double fitness_settle_s = 0.0;                // unscored frames at each log's start
+  std::map<std::string, double> joint_weights;  // joint → w_i ≥ 0 (absent: 1)
+  SourceRef joint_weights_where;
+  double imu_weight = 0.0;        // weight of the torso IMU's roll/pitch errors (0: joints only)
+  double window_s = 0.0;          // score only each log's first window_s seconds (0: whole logs)
+  bool early_termination = true;  // stop rollouts that cannot beat the selection threshold
+  StrategyConfig strategy;
+  FitBudget budget;
+  LoopOptions loop;
+  int threads = 1;         // OpenMP threads (results do not depend on it)
+  std::uint64_t seed = 1;  // every random number of the run derives from it
+  std::string out_dir;     // run folder (default: runs/<name>)
+  SourceRef root;          // the file as a whole (for messages about missing keys)
+
+  // Checks what can be checked without reading files (ranges, required fields, option
+  // values). Returns false and sets *error to one line saying what is wrong.
+  bool is_valid(std::string* error) const;
+};
+
+// Reads fit.yaml into a FitSpec, relative paths resolved against its folder, with `overrides`
+// applied. Reports every problem of the file at once (InputErrors naming file, line, field).
+FitSpec load_fit_spec(const std::string& path, const FitOverrides& overrides = {});
+
+// Applies command-line overrides (--threads, --seed, budget, --out, --data, --validation).
+void apply_fit_overrides(FitSpec& spec, const FitOverrides& overrides);
+
+}  // namespace motoflex

@@ -1,0 +1,59 @@
+#pragma once
+
+// FitSummary: what a finished (or stopped) fit reports, modelled on Ceres's Solver::Summary:
+// brief_report() is one line, full_report() the table a user reads, to_json() is summary.json.
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace motoflex {
+
+struct FittedParameter {
+  std::string name;  // as the fit names it (may be a pattern for a tie)
+  std::string unit;
+  double start = 0.0;
+  double lower = 0.0;
+  double upper = 0.0;
+  double value = 0.0;
+  bool log_scale = false;
+  // Where the value sits between its bounds, 0…1 (log scale where searched so); a value at a
+  // bound (< 1 % or > 99 %) usually means the bounds cut the optimum off.
+  double bound_fraction() const;
+};
+
+struct FitSummary {
+  std::string name;
+  std::string run_dir;
+  std::string strategy;   // e.g. "mu_plus_lambda(10+40, kappa 3)"
+  std::string evaluator;  // e.g. "openmp(2 threads)"
+  // Why the run ended: a budget ("max_generations"), "interrupted", or the strategy's own
+  // "strategy: tol_fun (...)".
+  std::string stop_reason;
+  // True when the strategy stopped by its own convergence test (tolerance on x or f, stall,
+  // target, a finished local optimiser); false for a budget, an interrupt or a failure.
+  bool converged = false;
+  std::string convergence;  // "converged: tolerance (tol_fun)" / "not converged: budget (...)"
+  double best_fitness = 0.0;
+  std::uint64_t evaluations = 0;  // main strategy + polish
+  std::uint64_t generations = 0;
+  std::uint64_t polish_evaluations = 0;
+  double seconds = 0.0;  // wall time over all sessions of the run
+  std::vector<FittedParameter> parameters;
+  double train_rms_deg = 0.0;
+  double validation_rms_deg = -1.0;  // < 0: no validation logs
+  std::uint64_t individuals_stopped_early = 0;
+  std::uint64_t frames_simulated = 0;
+  std::uint64_t frames_saved = 0;
+  nlohmann::ordered_json details;  // summary.json as written (per-joint and per-log errors, ...)
+
+  // "nao_quick: max_generations (not converged) after 3 generations, 36 evaluations: best
+  // fitness 8.09e-06, train RMS 1.2 deg, validation RMS 1.4 deg (23.5 s)".
+  std::string brief_report() const;
+  // The brief line, then the parameter table (start, fitted, bounds, position in the bounds),
+  // errors per log and the early-termination savings.
+  std::string full_report() const;
+};
+
+}  // namespace motoflex

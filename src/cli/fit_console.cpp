@@ -1,0 +1,57 @@
+#include "fit_console.hpp"
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+
+#include "motoflex/fit/fit_session.hpp"
+
+namespace motoflex::cli {
+namespace {
+
+// The one piece of process-global mutable state: what a signal handler may set (a lock-free
+// atomic is async-signal-safe).
+std::atomic<bool> g_stop_requested{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void request_stop(int) {
+  g_stop_requested.store(true);
+}
+
+}  // namespace
+
+int run_fit_on_console(FitConfig config, bool resume, motoflex_es::Evaluator* evaluator) {
+  const std::string dir = config.out_dir;
+  FitSession session(std::move(config), resume);
+  session.set_evaluator(evaluator);
+  g_stop_requested.store(false);
+  session.set_cancel_flag(&g_stop_requested);
+  session.set_progress([](const FitProgress& progress) {
+    std::printf("%s\n", progress.line().c_str());
+    std::fflush(stdout);
+  });
+  auto previous_int = std::signal(SIGINT, request_stop);
+  auto previous_term = std::signal(SIGTERM, request_stop);
+  FitSummary summary;
+  try {
+    summary = session.run();
+  } catch (...) {
+    std::signal(SIGINT, previous_int);
+    std::signal(SIGTERM, previous_term);
+    throw;
+  }
+  std::signal(SIGINT, previous_int);
+  std::signal(SIGTERM, previous_term);
+  if (summary.stop_reason == "interrupted") {
+    std::printf("interrupted: checkpoint written; continue with `motoflex resume %s`\n",
+                dir.c_str());
+  } else {
+    std::printf("done (%s): best fitness %.6g after %llu evaluations; see %s/summary.json\n",
+                summary.stop_reason.c_str(), summary.best_fitness,
+                static_cast<unsigned long long>(summary.evaluations), dir.c_str());
+    std::printf("%s\n", summary.convergence.c_str());
+  }
+  return 0;
+}
+
+}  // namespace motoflex::cli

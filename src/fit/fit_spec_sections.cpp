@@ -1,0 +1,101 @@
+#include "fit_spec_sections.hpp"
+
+#include "motoflex/model/effect_library.hpp"
+
+namespace motoflex {
+
+FitBudget read_budget(const YamlValue& budget) {
+  budget.require_keys_within({"generations", "evaluations", "seconds"});
+  FitBudget out;
+  const auto count = [&](const char* key) {
+    const int value = budget.get_int(key, 0);
+    if (value < 0) budget.at(key).fail("must be >= 0 (0 = no limit)");
+    return static_cast<std::uint64_t>(value);
+  };
+  out.max_generations = count("generations");
+  out.max_evaluations = count("evaluations");
+  out.max_seconds = budget.get_double("seconds", 0.0);
+  if (out.max_seconds < 0.0) budget.at("seconds").fail("must be >= 0 (0 = no limit)");
+  return out;
+}
+
+StrategyConfig read_strategy(const YamlValue& node) {
+  node.require_keys_within({"kind", "mu", "lambda", "kappa", "rho", "object_recombination",
+                            "step_recombination", "initial_step", "sigma", "population", "restarts",
+                            "algorithm", "polish", "polish_evaluations"});
+  StrategyConfig s;
+  s.kind = node.get_string("kind", s.kind);
+  if (s.kind != "mu_plus_lambda" && s.kind != "cma_es" && s.kind != "nlopt") {
+    node.at("kind").fail("expected mu_plus_lambda, cma_es or nlopt");
+  }
+  auto positive = [&](const char* key, int fallback) {
+    const int v = node.get_int(key, fallback);
+    if (v < 0) node.at(key).fail("must be >= 0");
+    return static_cast<std::size_t>(v);
+  };
+  s.mu = positive("mu", static_cast<int>(s.mu));
+  s.lambda = positive("lambda", static_cast<int>(s.lambda));
+  s.kappa = positive("kappa", static_cast<int>(s.kappa));
+  s.rho = positive("rho", static_cast<int>(s.rho));
+  s.object_recombination = node.get_string("object_recombination", s.object_recombination);
+  s.step_recombination = node.get_string("step_recombination", s.step_recombination);
+  for (const char* key : {"object_recombination", "step_recombination"}) {
+    if (const auto v = node.find(key)) {
+      const std::string text = v->as_string();
+      if (text != "none" && text != "discrete" && text != "intermediate") {
+        v->fail("expected none, discrete or intermediate");
+      }
+    }
+  }
+  s.initial_step = node.get_double("initial_step", s.initial_step);
+  s.sigma = node.get_double("sigma", s.sigma);
+  s.population = positive("population", 0);
+  s.restarts = positive("restarts", static_cast<int>(s.restarts));
+  s.algorithm = node.get_string("algorithm", s.algorithm);
+  for (const char* key : {"algorithm", "polish"}) {
+    if (const auto v = node.find(key)) {
+      const std::string text = v->as_string();
+      if (text.empty() && std::string(key) == "polish") continue;  // no polish
+      const bool local = text == "bobyqa" || text == "sbplx";
+      const bool global = text == "crs2_lm" || text == "isres" || text == "esch";
+      if (!(local || (global && std::string(key) == "algorithm"))) {
+        v->fail(std::string(key) == "polish" ? "expected bobyqa or sbplx"
+                                             : "expected bobyqa, sbplx, crs2_lm, isres or esch");
+      }
+    }
+  }
+  s.polish = node.get_string("polish", "");
+  s.polish_evaluations = positive("polish_evaluations", s.polish.empty() ? 0 : 200);
+  return s;
+}
+
+LoopOptions read_loop(const YamlValue& node) {
+  node.require_keys_within({"candidates", "max_iterations", "min_gain", "effects", "refit"});
+  LoopOptions loop;
+  const int candidates = node.get_int("candidates", static_cast<int>(loop.candidates));
+  if (candidates < 1) node.at("candidates").fail("must be >= 1");
+  loop.candidates = static_cast<std::size_t>(candidates);
+  const int iterations = node.get_int("max_iterations", static_cast<int>(loop.max_iterations));
+  if (iterations < 0) node.at("max_iterations").fail("must be >= 0");
+  loop.max_iterations = static_cast<std::size_t>(iterations);
+  loop.min_gain = node.get_double("min_gain", loop.min_gain);
+  if (!(loop.min_gain >= 0.0 && loop.min_gain < 1.0)) {
+    node.at("min_gain").fail("must be in [0, 1)");
+  }
+  if (const auto effects = node.find("effects")) {
+    for (const YamlValue& item : effects->items()) {
+      find_effect(item.as_string(), item.file(), item.line(), item.field());
+      loop.effects.push_back(item.as_string());
+    }
+  }
+  if (const auto refit = node.find("refit")) {
+    refit->require_keys_within({"strategy", "budget"});
+    if (const auto strategy = refit->find("strategy")) {
+      loop.refit_strategy = read_strategy(*strategy);
+    }
+    if (const auto budget = refit->find("budget")) loop.refit_budget = read_budget(*budget);
+  }
+  return loop;
+}
+
+}  // namespace motoflex

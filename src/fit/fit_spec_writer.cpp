@@ -1,0 +1,119 @@
+// FitSpec and its parts as JSON: run.json's overrides, the strategy in identities, and whole
+// specs written as fit.yaml files (the loop's refits).
+
+#include <filesystem>
+
+#include "motoflex/fit/fit_config.hpp"
+
+namespace motoflex {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::ordered_json log_paths(const std::vector<LogSource>& sources) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const LogSource& source : sources) out.push_back(source.path);
+  return out;
+}
+
+nlohmann::ordered_json free_json(const FreeParameterSpec& p) {
+  nlohmann::ordered_json entry = nlohmann::ordered_json::object();
+  if (p.lower) entry["lower"] = *p.lower;
+  if (p.upper) entry["upper"] = *p.upper;
+  entry["log"] = p.log_scale;
+  if (p.each) entry["each"] = true;
+  if (p.start) entry["start"] = *p.start;
+  return entry;
+}
+
+nlohmann::ordered_json budget_json(const FitBudget& budget) {
+  return {{"generations", budget.max_generations},
+          {"evaluations", budget.max_evaluations},
+          {"seconds", budget.max_seconds}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json strategy_to_json(const StrategyConfig& s) {
+  return {{"kind", s.kind},
+          {"mu", s.mu},
+          {"lambda", s.lambda},
+          {"kappa", s.kappa},
+          {"rho", s.rho},
+          {"object_recombination", s.object_recombination},
+          {"step_recombination", s.step_recombination},
+          {"initial_step", s.initial_step},
+          {"sigma", s.sigma},
+          {"population", s.population},
+          {"restarts", s.restarts},
+          {"algorithm", s.algorithm},
+          {"polish", s.polish},
+          {"polish_evaluations", s.polish_evaluations}};
+}
+
+nlohmann::json overrides_to_json(const FitOverrides& o) {
+  nlohmann::json out = nlohmann::json::object();
+  if (o.threads) out["threads"] = *o.threads;
+  if (o.seed) out["seed"] = *o.seed;
+  if (o.max_generations) out["max_generations"] = *o.max_generations;
+  if (o.max_evaluations) out["max_evaluations"] = *o.max_evaluations;
+  if (o.max_seconds) out["max_seconds"] = *o.max_seconds;
+  if (o.out) out["out"] = fs::absolute(*o.out).lexically_normal().string();
+  if (o.data) out["data"] = fs::absolute(*o.data).lexically_normal().string();
+  if (o.validation) out["validation"] = fs::absolute(*o.validation).lexically_normal().string();
+  return out;
+}
+
+FitOverrides overrides_from_json(const nlohmann::json& j) {
+  FitOverrides o;
+  if (j.contains("threads")) o.threads = j["threads"].get<int>();
+  if (j.contains("seed")) o.seed = j["seed"].get<std::uint64_t>();
+  if (j.contains("max_generations")) o.max_generations = j["max_generations"].get<std::uint64_t>();
+  if (j.contains("max_evaluations")) o.max_evaluations = j["max_evaluations"].get<std::uint64_t>();
+  if (j.contains("max_seconds")) o.max_seconds = j["max_seconds"].get<double>();
+  if (j.contains("out")) o.out = j["out"].get<std::string>();
+  if (j.contains("data")) o.data = j["data"].get<std::string>();
+  if (j.contains("validation")) o.validation = j["validation"].get<std::string>();
+  return o;
+}
+
+nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
+  nlohmann::ordered_json fit;
+  fit["name"] = spec.name;
+  fit["scenario"] = spec.scenario_path;
+  fit["logs"] = log_paths(spec.train_data);
+  if (!spec.validation_data.empty()) fit["validation"] = log_paths(spec.validation_data);
+  nlohmann::ordered_json free = nlohmann::ordered_json::object();
+  for (const FreeParameterSpec& p : spec.free) free[p.pattern] = free_json(p);
+  fit["free"] = free;
+  if (!spec.fixed.empty()) {
+    nlohmann::ordered_json fixed = nlohmann::ordered_json::object();
+    for (const auto& [name, value] : spec.fixed) fixed[name] = value;
+    fit["fixed"] = fixed;
+  }
+  if (!spec.effects.empty()) fit["effects"] = spec.effects;
+  nlohmann::ordered_json fitness = {{"m", spec.fitness_m},
+                                    {"settle_s", spec.fitness_settle_s},
+                                    {"early_termination", spec.early_termination}};
+  if (!spec.joint_weights.empty()) {
+    for (const auto& [joint, weight] : spec.joint_weights) fitness["weights"][joint] = weight;
+  }
+  if (spec.imu_weight > 0.0) fitness["imu_weight"] = spec.imu_weight;
+  if (spec.window_s > 0.0) fitness["window_s"] = spec.window_s;
+  fit["fitness"] = fitness;
+  fit["strategy"] = strategy_to_json(spec.strategy);
+  fit["budget"] = budget_json(spec.budget);
+  fit["loop"] = {{"candidates", spec.loop.candidates},
+                 {"max_iterations", spec.loop.max_iterations},
+                 {"min_gain", spec.loop.min_gain},
+                 {"effects", spec.loop.effects},
+                 {"refit",
+                  {{"strategy", strategy_to_json(spec.loop.refit_strategy)},
+                   {"budget", budget_json(spec.loop.refit_budget)}}}};
+  fit["threads"] = spec.threads;
+  fit["seed"] = spec.seed;
+  fit["out"] = spec.out_dir;
+  return fit;
+}
+
+}  // namespace motoflex

@@ -1,0 +1,79 @@
+#include "motoflex/fit/fit_summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace motoflex {
+namespace {
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+std::string pad(std::string text, std::size_t width) {
+  if (text.size() < width) text.append(width - text.size(), ' ');
+  return text;
+}
+
+}  // namespace
+
+double FittedParameter::bound_fraction() const {
+  if (log_scale && lower > 0.0 && value > 0.0) {
+    return (std::log(value) - std::log(lower)) / (std::log(upper) - std::log(lower));
+  }
+  return (value - lower) / (upper - lower);
+}
+
+std::string FitSummary::brief_report() const {
+  std::string line = name + ": " + stop_reason + (converged ? " (converged)" : " (not converged)");
+  line += " after " + std::to_string(generations) + " generations, " + std::to_string(evaluations) +
+          " evaluations: best fitness " + format("%.6g", best_fitness) + ", train RMS " +
+          format("%.3g", train_rms_deg) + " deg";
+  if (validation_rms_deg >= 0.0) {
+    line += ", validation RMS " + format("%.3g", validation_rms_deg) + " deg";
+  }
+  return line + " (" + format("%.1f", seconds) + " s)";
+}
+
+std::string FitSummary::full_report() const {
+  std::string out = brief_report() + "\n";
+  out += "  strategy   " + strategy + "\n";
+  out += "  evaluator  " + evaluator + "\n";
+  out += "  " + convergence + "\n";
+  if (polish_evaluations > 0) {
+    out += "  polish     " + std::to_string(polish_evaluations) + " evaluations\n";
+  }
+  std::size_t width = 10;
+  for (const auto& p : parameters) width = std::max(width, p.name.size());
+  out += "\n  " + pad("parameter", width) +
+         "        start       fitted        lower        upper  in bounds\n";
+  for (const auto& p : parameters) {
+    const double fraction = p.bound_fraction();
+    std::string flag = fraction < 0.01 || fraction > 0.99 ? "  at a bound" : "";
+    out += "  " + pad(p.name, width) + format(" %12.5g", p.start) + format(" %12.5g", p.value) +
+           format(" %12.5g", p.lower) + format(" %12.5g", p.upper) +
+           format("  %5.0f %%", 100.0 * fraction) + flag + " " + p.unit + "\n";
+  }
+  if (details.contains("robots")) {
+    out += "\n  training logs: fitness, frames simulated / requested, end, RMS (deg)\n";
+    for (const auto& robot : details["robots"]) {
+      out += "  " + pad(robot.value("name", std::string("?")), width) +
+             format(" %12.5g", robot.value("fitness", 0.0)) + "  " +
+             std::to_string(robot.value("frames", 0)) + "/" +
+             std::to_string(robot.value("frames_requested", 0)) + "  " +
+             robot.value("end", std::string("?")) + format("  %.3g", robot.value("rms_deg", 0.0)) +
+             "\n";
+    }
+  }
+  if (frames_simulated > 0) {
+    out += "\n  early termination: " + std::to_string(individuals_stopped_early) +
+           " individuals stopped, " + std::to_string(frames_saved) + " of " +
+           std::to_string(frames_simulated + frames_saved) + " frames saved\n";
+  }
+  return out;
+}
+
+}  // namespace motoflex

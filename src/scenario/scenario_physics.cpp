@@ -1,0 +1,88 @@
+#include "scenario_physics.hpp"
+
+#include "motoflex/core/error_collector.hpp"
+
+namespace motoflex {
+
+std::optional<StepSolver> parse_step_solver(const std::string& text) {
+  if (text == "step") return StepSolver::kStep;
+  if (text == "quick") return StepSolver::kQuickStep;
+  return std::nullopt;
+}
+
+void read_step_settings(const YamlValue& physics, RolloutOptions& rollout) {
+  rollout.dt_s = physics.get_double("dt_s", rollout.dt_s);
+  if (!(rollout.dt_s > 0.0 && rollout.dt_s <= 0.01)) {
+    physics.at("dt_s").fail("must be in (0, 0.01] s");
+  }
+  if (const auto solver = physics.find("solver")) {
+    const auto parsed = parse_step_solver(solver->as_string());
+    if (!parsed) solver->fail("expected 'step' or 'quick'");
+    rollout.solver = *parsed;
+  }
+}
+
+namespace detail {
+namespace {
+
+// Limits on what sizes the work of one rollout (a typo must not hang a run for hours).
+constexpr int kMaxQuickStepIterations = 10000;
+constexpr int kMaxGearSubsteps = 10000;
+constexpr double kMaxSettle_s = 60.0;
+
+void read_physics_section(const YamlValue& physics, ScenarioPhysics& out) {
+  physics.require_keys_within({"dt_s", "solver", "quickstep_iterations", "gear_substeps",
+                               "flex_sub_bodies", "universal_joints", "settle_s", "hold_torso"});
+  RolloutOptions& rollout = out.rollout;
+  StructureOptions& structure = out.structure;
+  ErrorCollector errors;
+  errors.check([&] { read_step_settings(physics, rollout); });
+  errors.check([&] {
+    rollout.quickstep_iterations =
+        physics.get_int("quickstep_iterations", rollout.quickstep_iterations);
+    if (rollout.quickstep_iterations < 1 ||
+        rollout.quickstep_iterations > kMaxQuickStepIterations) {
+      physics.at("quickstep_iterations")
+          .fail("must be between 1 and " + std::to_string(kMaxQuickStepIterations));
+    }
+  });
+  errors.check([&] {
+    rollout.gear_substeps = physics.get_int("gear_substeps", rollout.gear_substeps);
+    if (rollout.gear_substeps < 1 || rollout.gear_substeps > kMaxGearSubsteps) {
+      physics.at("gear_substeps").fail("must be between 1 and " + std::to_string(kMaxGearSubsteps));
+    }
+  });
+  errors.check([&] {
+    structure.flex_sub_bodies = physics.get_int("flex_sub_bodies", structure.flex_sub_bodies);
+    if (structure.flex_sub_bodies < 1 || structure.flex_sub_bodies > 16) {
+      physics.at("flex_sub_bodies").fail("must be between 1 and 16");
+    }
+  });
+  errors.check([&] { structure.universal_joints = physics.get_bool("universal_joints", true); });
+  errors.check([&] {
+    rollout.settle_s = physics.get_double("settle_s", 0.0);
+    if (!(rollout.settle_s >= 0.0 && rollout.settle_s <= kMaxSettle_s)) {
+      physics.at("settle_s")
+          .fail("must be between 0 and " + std::to_string(int(kMaxSettle_s)) + " s");
+    }
+  });
+  errors.check([&] { rollout.hold_torso = physics.get_bool("hold_torso", false); });
+  errors.throw_if_any();
+}
+
+}  // namespace
+
+ScenarioPhysics read_scenario_physics(const std::optional<YamlValue>& physics,
+                                      const ScenarioOverrides& overrides) {
+  ScenarioPhysics out;
+  if (physics) read_physics_section(*physics, out);
+  if (overrides.solver) out.rollout.solver = *overrides.solver;
+  if (overrides.flex_sub_bodies) out.structure.flex_sub_bodies = *overrides.flex_sub_bodies;
+  if (overrides.gear_substeps) out.rollout.gear_substeps = *overrides.gear_substeps;
+  if (overrides.universal_joints) out.structure.universal_joints = *overrides.universal_joints;
+  if (overrides.settle_s) out.rollout.settle_s = *overrides.settle_s;
+  return out;
+}
+
+}  // namespace detail
+}  // namespace motoflex

@@ -1,0 +1,136 @@
+#include "firmware_servo_law.hpp"
+
+#include <stdexcept>
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/sim/actuator/friction_family.hpp"
+#include "motoflex/sim/actuator/h_bridge_motor.hpp"
+#include "motoflex/sim/actuator/position_firmware.hpp"
+#include "motoflex/sim/actuator/servo_stages.hpp"
+
+namespace motoflex::detail {
+namespace {
+
+const char* const kLeaves[] = {"kp",
+                               "ki",
+                               "kd",
+                               "kp_divisor",
+                               "ki_divisor",
+                               "kd_divisor",
+                               "ticks_per_rev",
+                               "integer_ticks",
+                               "deadband_ticks",
+                               "pwm_limit",
+                               "pwm_full_scale",
+                               "supply_v",
+                               "Kt_nm_per_a",
+                               "R_ohm",
+                               "gear_ratio",
+                               "current_limit_a",
+                               "torque_off_s"};
+
+struct FirmwareServoParams {
+  PositionFirmwareParams firmware;
+  HBridgeMotorParams motor;
+  double torque_off_s = 1.0e9;  // log time from which the H-bridge is released
+  FrictionParams friction;
+  double armature_kg_m2 = 0.0;
+};
+
+class FirmwareServoLaw final : public ServoLaw {
+ public:
+  FirmwareServoLaw(const FirmwareServoParams& p, double dt_s)
+      : params_(p),
+        firmware_(p.firmware, dt_s),
+        external_(friction_reads_external_torque(p.friction)) {}
+
+  ServoOutput step(const ServoInput& in) override {
+    ServoOutput out;
+    // A released H-bridge (BAM's torque_enable false) leaves the windings open: no drive, no
+    // back-EMF braking (bam.md §2b); the firmware loop does not run.
+    if (in.elapsed_s - in.settle_s < params_.torque_off_s) {
+      const double duty = firmware_.update(in.command_rad, in.angle_rad);
+      const HBridgeMotorOutput motor = h_bridge_motor(params_.motor, duty, in.rate_rad_s);
+      out.torque_nm = motor.torque_nm;
+      current_a_ = motor.current_a;
+    } else {
+      out.torque_nm = 0.0;
+      current_a_ = 0.0;
+    }
+    out.row = joint_friction(params_.friction, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
+    return out;
+  }
+  double current_a() const override { return current_a_; }
+  double armature_kg_m2() const override { return params_.armature_kg_m2; }
+  bool needs_external_torque() const override { return external_; }
+
+ private:
+  FirmwareServoParams params_;
+  PositionFirmware firmware_;
+  bool external_;
+  double current_a_ = 0.0;
+};
+
+}  // namespace
+
+std::vector<std::string> firmware_law_parameter_names(const RobotModel& model,
+                                                      std::size_t actuator) {
+  const ActuatorSpec& spec = model.actuators[actuator];
+  const std::string prefix = servo_parameter_prefix(spec);
+  std::vector<std::string> out;
+  for (const char* leaf : kLeaves) out.push_back(prefix + leaf);
+  for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kFamily)) {
+    out.push_back(std::move(name));
+  }
+  out.push_back(armature_parameter_name(spec.name));
+  return out;
+}
+
+std::unique_ptr<ServoLaw> create_firmware_law(const ServoLawSetup& setup) {
+  const ActuatorSpec& spec = setup.model.actuators[setup.actuator];
+  const std::string prefix = servo_parameter_prefix(spec);
+  const auto get = [&](const char* leaf) { return setup.get(prefix + leaf); };
+  FirmwareServoParams p;
+  p.firmware.kp = get("kp");
+  p.firmware.ki = get("ki");
+  p.firmware.kd = get("kd");
+  p.firmware.kp_divisor = get("kp_divisor");
+  p.firmware.ki_divisor = get("ki_divisor");
+  p.firmware.kd_divisor = get("kd_divisor");
+  p.firmware.ticks_per_rev = get("ticks_per_rev");
+  p.firmware.integer_ticks = get("integer_ticks") >= 0.5;
+  p.firmware.deadband_ticks = get("deadband_ticks");
+  p.firmware.pwm_limit = get("pwm_limit");
+  p.firmware.pwm_full_scale = get("pwm_full_scale");
+  p.motor.supply_v = get("supply_v");
+  p.motor.torque_constant_nm_per_a = get("Kt_nm_per_a");
+  p.motor.resistance_ohm = get("R_ohm");
+  p.motor.gear_ratio = get("gear_ratio");
+  p.motor.current_limit_a = get("current_limit_a");
+  p.torque_off_s = get("torque_off_s");
+  if (!(p.motor.resistance_ohm > 0.0)) throw ModelError(prefix + "R_ohm must be positive");
+  if (!(p.motor.gear_ratio > 0.0) || p.motor.supply_v < 0.0 || p.motor.current_limit_a < 0.0) {
+    throw ModelError(prefix + "gear_ratio must be positive, supply_v and current_limit_a >= 0");
+  }
+  p.friction = read_friction(setup.get, spec.name, FrictionTerms::kFamily);
+  p.armature_kg_m2 = read_armature_kg_m2(setup.get, spec.name);
+  try {
+    return std::make_unique<FirmwareServoLaw>(p, setup.dt_s);
+  } catch (const std::invalid_argument& error) {
+    // A bad candidate in a fit, not a crash.
+    throw ModelError(spec.name + ": " + error.what());
+  }
+}
+
+std::vector<ParameterSpec> firmware_law_defaults(const RobotModel& model, std::size_t actuator,
+                                                 const std::vector<FirmwareDefault>& vendor) {
+  const std::string prefix = servo_parameter_prefix(model.actuators[actuator]);
+  std::vector<ParameterSpec> specs;
+  for (const FirmwareDefault& d : vendor) {
+    const std::string name = prefix + d.leaf;
+    specs.push_back({name, unit_from_parameter_name(name), d.value, d.lower, d.upper});
+  }
+  return specs;
+}
+
+}  // namespace motoflex::detail

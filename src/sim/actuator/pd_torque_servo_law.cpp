@@ -1,0 +1,105 @@
+// `servo: pd_torque` — a torque-controlled actuator with a PD position loop (Isaac Lab's ideal
+// PD / DC motor actuators, MuJoCo's position actuator with a force limit):
+//   τ = clip(kp·(θ_d − θ) − kd·θ̇, limits(θ̇))
+// with ±τ_max, and with a no-load speed ω₀ > 0 the motor's linear torque–speed curve
+// (clip_torque_speed_nm). Joint friction from BAM's family on τ, armature as joint inertia.
+// The torque is explicit: stable while kd·h/(I + J) < 2 and kp·h² /(I + J) small (the rollout
+// ends a diverging candidate as a model failure).
+
+#include "motoflex/core/error.hpp"
+#include "motoflex/sim/actuator/friction_family.hpp"
+#include "motoflex/sim/actuator/servo_stages.hpp"
+
+namespace motoflex {
+namespace {
+
+struct PdTorqueParams {
+  double kp_nm_per_rad = 0.0;
+  double kd_nm_s_per_rad = 0.0;
+  double torque_max_nm = 0.0;
+  double no_load_speed_rad_s = 0.0;  // 0 = no torque–speed curve
+};
+
+class PdTorqueServoLaw final : public ServoLaw {
+ public:
+  PdTorqueServoLaw(PdTorqueParams params, FrictionParams friction, double armature_kg_m2)
+      : params_(params),
+        friction_(friction),
+        armature_kg_m2_(armature_kg_m2),
+        external_(friction_reads_external_torque(friction)) {}
+
+  ServoOutput step(const ServoInput& in) override {
+    const double pd_nm = params_.kp_nm_per_rad * (in.command_rad - in.angle_rad) -
+                         params_.kd_nm_s_per_rad * in.rate_rad_s;
+    ServoOutput out;
+    out.torque_nm = clip_torque_speed_nm(pd_nm, in.rate_rad_s, params_.torque_max_nm,
+                                         params_.no_load_speed_rad_s);
+    out.row = joint_friction(friction_, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
+    return out;
+  }
+  double armature_kg_m2() const override { return armature_kg_m2_; }
+  bool needs_external_torque() const override { return external_; }
+
+ private:
+  PdTorqueParams params_;
+  FrictionParams friction_;
+  double armature_kg_m2_;
+  bool external_;
+};
+
+const char* const kLeaves[] = {"kp_nm_per_rad", "kd_nm_s_per_rad", "torque_max_nm",
+                               "no_load_speed_rad_s"};
+
+std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
+  const ActuatorSpec& spec = model.actuators[actuator];
+  const std::string prefix = servo_parameter_prefix(spec);
+  std::vector<std::string> out;
+  for (const char* leaf : kLeaves) out.push_back(prefix + leaf);
+  for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kFamily)) {
+    out.push_back(std::move(name));
+  }
+  out.push_back(armature_parameter_name(spec.name));
+  return out;
+}
+
+std::vector<ParameterSpec> defaults(const RobotModel& model, std::size_t actuator) {
+  // Generic hobby-to-small-robot values: a stiff but not explicit-unstable loop on ~0.01 kg·m².
+  const std::string prefix = servo_parameter_prefix(model.actuators[actuator]);
+  const auto spec = [&](const char* leaf, double value, double lower, double upper) {
+    const std::string name = prefix + leaf;
+    return ParameterSpec{name, unit_from_parameter_name(name), value, lower, upper};
+  };
+  return {spec("kp_nm_per_rad", 20.0, 0.0, 2000.0), spec("kd_nm_s_per_rad", 0.5, 0.0, 50.0),
+          spec("torque_max_nm", 5.0, 0.01, 500.0), spec("no_load_speed_rad_s", 0.0, 0.0, 100.0)};
+}
+
+std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
+  const ActuatorSpec& spec = setup.model.actuators[setup.actuator];
+  const std::string prefix = servo_parameter_prefix(spec);
+  PdTorqueParams p;
+  p.kp_nm_per_rad = setup.get(prefix + "kp_nm_per_rad");
+  p.kd_nm_s_per_rad = setup.get(prefix + "kd_nm_s_per_rad");
+  p.torque_max_nm = setup.get(prefix + "torque_max_nm");
+  p.no_load_speed_rad_s = setup.get(prefix + "no_load_speed_rad_s");
+  if (p.kp_nm_per_rad < 0.0 || p.kd_nm_s_per_rad < 0.0 || p.torque_max_nm < 0.0 ||
+      p.no_load_speed_rad_s < 0.0) {
+    throw ModelError(prefix +
+                     "{kp_nm_per_rad, kd_nm_s_per_rad, torque_max_nm, "
+                     "no_load_speed_rad_s} must not be negative");
+  }
+  return std::make_unique<PdTorqueServoLaw>(
+      p, read_friction(setup.get, spec.name, FrictionTerms::kFamily),
+      read_armature_kg_m2(setup.get, spec.name));
+}
+
+}  // namespace
+
+ServoLawInfo pd_torque_servo_law_info() {
+  ServoLawInfo info{"pd_torque",
+                    "torque PD: clip(kp(q_d - q) - kd q', +-torque_max, torque-speed curve)", names,
+                    create};
+  info.default_parameters = defaults;
+  return info;
+}
+
+}  // namespace motoflex

@@ -1,0 +1,153 @@
+// `motoflex experiment seed001` below the command line: the metrics of a run (steady window cut
+// at a fall, fall direction), the ZMP choice rule, the config's errors, and a short study on the
+// rigid model whose numbers and JSON shape are checked and which does not depend on the thread
+// count.
+
+#include "motoflex/studies/seed001/seed001_study.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cli/cli_test_support.hpp"
+#include "motoflex/core/error.hpp"
+#include "motoflex/studies/seed001/seed001_config.hpp"
+#include "motoflex/studies/seed001/seed001_report.hpp"
+
+namespace motoflex::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A synthetic rollout: torso at 0.1 m/s, pitch alternating 0.02/0.04 rad per 0.5 s step, a fall
+// to the right at 3.27 s.
+RolloutResult synthetic_fall() {
+  RolloutResult r;
+  for (int i = 0; i * 0.01 <= 3.265; ++i) {
+    const double t = i * 0.01;
+    const int k = static_cast<int>(std::floor(t / 0.5));
+    r.time_s.push_back(t);
+    r.torso_position_m.insert(r.torso_position_m.end(), {0.1 * t, 0.002 * t, 0.3});
+    r.imu_pitch_rad.push_back((k % 2 == 0 ? 0.02 : 0.04) *
+                              std::sin(2 * std::numbers::pi * t / 0.5));
+    r.imu_roll_rad.push_back(t > 3.1 ? 0.9 : 0.01);
+  }
+  r.frames_completed = r.time_s.size();
+  r.end = RolloutEnd::kFell;
+  r.end_time_s = 3.27;
+  return r;
+}
+
+TEST(Seed001Study, AFallCutsTheSteadyPartToWholeStepsAndNamesItsDirection) {
+  const Seed001Run run = evaluate_walk_run(synthetic_fall(), 1.0, 4.0, 0.5);
+  EXPECT_TRUE(run.fell);
+  EXPECT_DOUBLE_EQ(run.fall_s, 3.27);
+  EXPECT_DOUBLE_EQ(run.steady_end_s, 3.0);  // last step boundary before the fall
+  EXPECT_NEAR(run.speed_mm_s, 100.0, 1e-9);
+  EXPECT_NEAR(run.mean_speed_mm_s, 100.0, 1e-9);  // 1 s to the end (< 9 s)
+  ASSERT_TRUE(run.fall_direction.has_value());
+  EXPECT_EQ(*run.fall_direction, FallDirection::kRight);
+  EXPECT_NEAR(run.pitch_alternation, 2.0, 0.01);  // windows of 0.01 s samples: near the peaks
+  EXPECT_NEAR(run.max_abs_roll_rad, 0.9, 1e-12);
+  // Falling within the first gait cycle of the steady part leaves no steady speed.
+  const Seed001Run early = evaluate_walk_run(synthetic_fall(), 2.5, 6.0, 0.5);
+  EXPECT_TRUE(std::isnan(early.speed_mm_s));
+  EXPECT_TRUE(std::isnan(early.pitch_alternation));
+}
+
+TEST(Seed001Study, TheChosenZmpWalksWithTheSmallestRoll) {
+  std::vector<Seed001ZmpTrial> trials(5);
+  const double values[] = {0.02, 0.01, 0.0, -0.01, 0.5};
+  const double rolls[] = {0.05, 0.03, 0.02, 0.01, 0.0};
+  for (int i = 0; i < 5; ++i) {
+    trials[i].setting = {i < 4 ? "zmp_offset_y_m" : "zmp_transfer_smoothing", values[i]};
+    trials[i].run.max_abs_roll_rad = rolls[i];
+  }
+  trials[3].run.fell = true;                   // smallest roll, but it falls
+  trials[4].run.unplannable = "out of reach";  // never ran
+  EXPECT_EQ(choose_zmp_trial(trials), 2);
+  for (auto& trial : trials) trial.run.fell = true;
+  EXPECT_EQ(choose_zmp_trial(trials), -1);
+}
+
+fs::path write_study(const fs::path& dir) {
+  const std::string source = MOTOFLEX_SOURCE_DIR;
+  // The 50 mm/s, 2 s walk, shortened to 8 s (start 1 s, three gait cycles, stop 1 s).
+  write_text(dir / "walk.yaml",
+             "motion:\n  walk: {speed_mm_s: 50, step_duration_s: 2, "
+             "duration_s: 8, rate_hz: 100}\n");
+  write_text(dir / "study.yaml",
+             "walks:\n  - {name: short_50_2, scenario: walk.yaml, figure: roll}\n"
+             "variants:\n  - {name: rigid, scenario: " +
+                 source +
+                 "/scenarios/experiments/seed001/rigid.yaml}\n"
+                 "  - {name: later, pending: not yet}\n"
+                 "zmp: {walk: short_50_2, search: {zmp_offset_y_m: [0.02, 0.0], "
+                 "zmp_transfer_smoothing: [1]}, variants: [rigid, later]}\n");
+  return dir / "study.yaml";
+}
+
+TEST(Seed001Study, AShortStudyOnTheRigidModel) {
+  const fs::path dir = fresh_dir("seed001_study");
+  const Seed001Config config = load_seed001_config(write_study(dir).string());
+  const Seed001Results one = run_seed001(config, 1);
+  const Seed001Results two = run_seed001(config, 2);
+  ASSERT_EQ(one.runs.size(), 2u);
+  const Seed001Run& rigid = one.runs[0];
+  EXPECT_FALSE(rigid.fell);
+  EXPECT_TRUE(std::isnan(rigid.fall_s));
+  EXPECT_EQ(rigid.steady_start_s, 3.0);  // the end of the first full step (1 + 2 × 1 s)
+  EXPECT_EQ(rigid.steady_end_s, 6.0);    // the start of the closing step
+  // Ideal servos walk the plan: measured 52.0 mm/s over the steady part (the plan's CoM: 50),
+  // pitch alternation 1.006, peak roll 0.0003 rad.
+  EXPECT_NEAR(rigid.speed_mm_s, 50.0, 5.0);
+  EXPECT_NEAR(rigid.pitch_alternation, 1.0, 0.05);
+  EXPECT_LT(rigid.max_abs_roll_rad, 0.003);
+  EXPECT_EQ(one.runs[1].pending, "not yet");
+  const nlohmann::ordered_json a = seed001_json(config, one);
+  EXPECT_EQ(a.dump(), seed001_json(config, two).dump());
+  EXPECT_TRUE(a["short_50_2"]["rigid"]["fall_s"].is_null());
+  EXPECT_EQ(a["short_50_2"]["later"]["pending"], "not yet");
+  ASSERT_TRUE(one.zmp.has_value());
+  EXPECT_EQ(one.zmp->variants, std::vector<std::string>{"rigid"});  // pending ones skipped
+  ASSERT_EQ(one.zmp->defaults.size(), 2u);
+  EXPECT_EQ(one.zmp->defaults[0].value, 0.02);  // the planner's default zmp_offset_y_m
+  EXPECT_EQ(one.zmp->defaults[1].value, 0.0);
+  const auto& trials = a["zmp_experiment"]["variants"]["rigid"]["trials"];
+  ASSERT_EQ(trials.size(), 3u);
+  // zmp_offset_y_m 0 puts RAnkleRoll beyond its limit: the planner refuses, the search goes on.
+  EXPECT_NE(trials[1]["unplannable"].get<std::string>().find("RAnkleRoll"), std::string::npos)
+      << trials[1];
+  EXPECT_EQ(trials[2]["option"], "zmp_transfer_smoothing");
+  EXPECT_EQ(trials[2]["fell"], false);
+  write_seed001_report(config, one, (dir / "out").string(), false);
+  EXPECT_TRUE(fs::exists(dir / "out" / "seed001.json"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "series" / "short_50_2__rigid.csv"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "series" / "zmp__rigid__2.csv"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "series" / "zmp__rigid__1.csv"));  // unplannable
+}
+
+TEST(Seed001Study, ConfigErrorsNameTheirField) {
+  const fs::path dir = fresh_dir("seed001_config");
+  write_study(dir);
+  write_text(dir / "bad.yaml",
+             "walks:\n  - {name: w, scenario: walk.yaml, figure: yaw}\nvariants: []\n");
+  try {
+    load_seed001_config((dir / "bad.yaml").string());
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.line(), 2) << error.what();
+    EXPECT_NE(error.message().find("pitch"), std::string::npos) << error.what();
+  }
+  write_text(dir / "bad.yaml",
+             "walks:\n  - {name: w, scenario: walk.yaml}\nvariants:\n"
+             "  - {name: v, pending: x}\nzmp: {walk: w, search: {zmp_offset_y_m: [0]}, "
+             "variants: [nobody]}\n");
+  EXPECT_THROW(load_seed001_config((dir / "bad.yaml").string()), InputError);
+  EXPECT_THROW(find_experiment_config("no_such_experiment"), InputError);
+  EXPECT_NO_THROW(find_experiment_config("seed001"));
+}
+
+}  // namespace
+}  // namespace motoflex::testing
