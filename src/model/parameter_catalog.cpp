@@ -40,8 +40,10 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
     add(joint + "load_friction_external", 0.0, 0.0, 0.5);
     add(joint + "load_friction_stribeck", 0.0, 0.0, 1.0);
     add(joint + "load_friction_external_stribeck", 0.0, 0.0, 1.0);
-    add(joint + "load_friction_quad_per_nm", 0.0, 0.0, 0.01);
-    add(joint + "load_friction_external_quad_per_nm", 0.0, 0.0, 0.01);
+    // Per N·m of torque, or per N of force on a slider (friction_family.hpp).
+    const std::string per = a.prismatic ? "_per_n" : "_per_nm";
+    add(joint + "load_friction_quad" + per, 0.0, 0.0, 0.01);
+    add(joint + "load_friction_external_quad" + per, 0.0, 0.0, 0.01);
     add(joint + "friction_model", 6.0, 1.0, 6.0);
   }
   return specs;

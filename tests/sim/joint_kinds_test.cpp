@@ -82,6 +82,30 @@ TEST(JointKindsTest, PrismaticJointSlidesWithTheAnalyticAcceleration) {
   EXPECT_NEAR(q.back(), -0.5 * a * 0.25, 2e-3);
 }
 
+// A slider's friction is read in N (joint.<J>.friction_n, friction_family.hpp) and acts as a
+// budget: 1 N of the 2.4525 N of gravity along the incline leaves a = 1.4525 N / 0.5 kg, and
+// 3 N holds the block.
+TEST(JointKindsTest, PrismaticJointFrictionInNewtonsSlowsAndHoldsTheSlide) {
+  const RobotModel model =
+      load_robot(slider_folder("slide_friction", "lower=\"-5\" upper=\"5\""), {});
+  ASSERT_TRUE(model.parameters.contains("joint.slide.friction_n"));
+  EXPECT_FALSE(model.parameters.contains("joint.slide.friction_nm"));
+  const auto slide_with = [&](double friction_n) {
+    ParameterSet values(model.parameters);
+    values.set("joint.slide.friction_n", friction_n);
+    RolloutOptions options;
+    options.servo.clear();
+    Rollout rollout(model, values, options, {0.0});
+    const double hold = 0.0;
+    for (int k = 0; k < 500; ++k) EXPECT_TRUE(rollout.step(&hold, &hold));
+    return rollout.joint_angle_rad(0);
+  };
+  const double a = (0.5 * 0.5 * kGravity_m_s2 - 1.0) / 0.5;
+  const double n = 500.0, h = 1e-3;
+  EXPECT_NEAR(slide_with(1.0), -a * h * h * n * (n + 1) / 2, 1e-9);
+  EXPECT_NEAR(slide_with(3.0), 0.0, 1e-9);
+}
+
 TEST(JointKindsTest, PrismaticJointStopsAtItsLimitUnlessStopsAreOff) {
   const RobotModel stopped = load_robot(slider_folder("stop", "lower=\"-0.2\" upper=\"0.2\""), {});
   EXPECT_NEAR(slide(stopped, 1.0).back(), -0.2, 1e-9);  // measured 1.2e-12
