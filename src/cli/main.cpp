@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   runners["export"] = motoflex::cli::add_export_command(app);
   runners["residuals"] = motoflex::cli::add_residuals_command(app);
   runners["loop"] = motoflex::cli::add_loop_command(app);
+  runners["init-robot"] = motoflex::cli::add_init_robot_command(app);
+  runners["check-robot"] = motoflex::cli::add_check_robot_command(app);
   runners["report"] = motoflex::cli::add_report_command(app);
   try {
     app.parse(argc, argv);

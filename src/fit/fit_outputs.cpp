@@ -4,10 +4,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "fit_sensitivity.hpp"
 #include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/core/text_hash.hpp"
 #include "motoflex/core/utc_time.hpp"
+#include "motoflex/fit/excitation_check.hpp"
 #include "motoflex/fit/fit_report.hpp"
 #include "motoflex/io/plot_script.hpp"
 
@@ -51,8 +53,8 @@ void write_best_json(const FitConfig& config, const RunResult& result, const Par
                         best_json.dump(2) + "\n");
 }
 
-std::vector<FittedParameter> fitted_parameters(const FitConfig& config,
-                                               const std::vector<double>& x) {
+std::vector<FittedParameter> fitted_parameters(const FitConfig& config, const RunResult& result) {
+  const std::vector<double>& x = result.best_x;
   std::vector<FittedParameter> out;
   const auto values = config.space->values(x);
   const auto& free = config.space->free_parameters();
@@ -60,8 +62,25 @@ std::vector<FittedParameter> fitted_parameters(const FitConfig& config,
     const FreeParameter& p = free[i];
     out.push_back({p.name, unit_from_parameter_name(p.targets.front()), p.start, p.lower, p.upper,
                    values[i].second, p.log_scale});
+    if (i < result.sensitivity.size()) out.back().sensitivity = result.sensitivity[i];
   }
   return out;
+}
+
+// Per parameter the relative fitness change per bound-width and whether the data determine it;
+// "undetermined" lists the names the data cannot pin down.
+nlohmann::ordered_json sensitivity_json(const std::vector<FittedParameter>& parameters) {
+  nlohmann::ordered_json per = nlohmann::ordered_json::object();
+  nlohmann::ordered_json undetermined = nlohmann::ordered_json::array();
+  for (const auto& p : parameters) {
+    per[p.name] = {{"relative_fitness_change_per_bound_width", p.sensitivity},
+                   {"determined", !p.undetermined()}};
+    if (p.undetermined()) undetermined.push_back(p.name);
+  }
+  return {{"step_share_of_bounds", kSensitivityStep},
+          {"undetermined_below", kUndeterminedBelow},
+          {"parameters", per},
+          {"undetermined", undetermined}};
 }
 
 }  // namespace
@@ -89,7 +108,7 @@ FitSummary write_fit_outputs(const FitConfig& config, const FitProblem& problem,
   const fs::path dir = config.out_dir;
   const ParameterSet best = config.space->apply(result.best_x);
   write_best_json(config, result, best);
-  summary.parameters = fitted_parameters(config, result.best_x);
+  summary.parameters = fitted_parameters(config, result);
 
   const DetailedEvaluation train = evaluate_in_detail(*config.train, best);
   nlohmann::ordered_json& json = summary.details;
@@ -108,6 +127,11 @@ FitSummary write_fit_outputs(const FitConfig& config, const FitProblem& problem,
   nlohmann::ordered_json free = nlohmann::ordered_json::object();
   for (const auto& p : summary.parameters) free[p.name] = p.value;
   json["free"] = free;
+  if (const auto still = excitation_warnings(config.train->model(), config.train->cases());
+      !still.empty()) {
+    json["excitation_warnings"] = still;
+  }
+  if (!result.sensitivity.empty()) json["sensitivity"] = sensitivity_json(summary.parameters);
   summary.train_rms_deg = train.rms_deg;
   if (config.validation) {
     const DetailedEvaluation validation = evaluate_in_detail(*config.validation, best);

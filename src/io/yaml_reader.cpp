@@ -1,5 +1,7 @@
 #include "motoflex/io/yaml_reader.hpp"
 
+#include "motoflex/core/error_collector.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -165,7 +167,8 @@ void YamlValue::require_map() const {
 }
 
 void YamlValue::require_sequence() const {
-  if (!node_->IsSequence() && !node_->IsNull()) fail("expected a sequence, got " + describe(*node_));
+  if (!node_->IsSequence() && !node_->IsNull())
+    fail("expected a sequence, got " + describe(*node_));
 }
 
 void YamlValue::require_plain_scalar(const char* expected) const {
@@ -207,36 +210,56 @@ std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
   return result;
 }
 
+namespace {
+
+// "unknown key 'k' (did you mean 'x'?)" or the list of allowed keys.
+std::string unknown_key_message(const std::string& key,
+                                std::initializer_list<std::string_view> allowed) {
+  std::string_view closest;
+  int closest_distance = 3;  // suggest only within edit distance 2
+  for (std::string_view candidate : allowed) {
+    const int distance = edit_distance(key, candidate);
+    if (distance < closest_distance) {
+      closest_distance = distance;
+      closest = candidate;
+    }
+  }
+  // Our keys carry their unit ("rate_hz", "dt_s"): a key without its unit is a likely slip.
+  for (std::string_view candidate : allowed) {
+    if (!closest.empty()) break;
+    if (candidate.size() > key.size() + 1 && candidate.substr(0, key.size()) == key &&
+        candidate[key.size()] == '_') {
+      closest = candidate;
+    }
+  }
+  std::string message = "unknown key '" + key + "'";
+  if (!closest.empty()) {
+    message += " (did you mean '" + std::string(closest) + "'?)";
+  } else {
+    message += " (allowed:";
+    for (std::string_view candidate : allowed) message += " " + std::string(candidate);
+    message += ")";
+  }
+  return message;
+}
+
+}  // namespace
+
 void YamlValue::require_keys_within(std::initializer_list<std::string_view> allowed) const {
   for (const auto& [key, value] : entries()) {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-    std::string_view closest;
-    int closest_distance = 3;  // suggest only within edit distance 2
-    for (std::string_view candidate : allowed) {
-      const int distance = edit_distance(key, candidate);
-      if (distance < closest_distance) {
-        closest_distance = distance;
-        closest = candidate;
-      }
-    }
-    // Our keys carry their unit ("rate_hz", "dt_s"): a key without its unit is a likely slip.
-    for (std::string_view candidate : allowed) {
-      if (!closest.empty()) break;
-      if (candidate.size() > key.size() + 1 && candidate.substr(0, key.size()) == key &&
-          candidate[key.size()] == '_') {
-        closest = candidate;
-      }
-    }
-    std::string message = "unknown key '" + key + "'";
-    if (!closest.empty()) {
-      message += " (did you mean '" + std::string(closest) + "'?)";
-    } else {
-      message += " (allowed:";
-      for (std::string_view candidate : allowed) message += " " + std::string(candidate);
-      message += ")";
-    }
-    value.fail(message);
+    value.fail(unknown_key_message(key, allowed));
   }
+}
+
+void YamlValue::check_keys_within(std::initializer_list<std::string_view> allowed,
+                                  ErrorCollector& errors) const {
+  errors.check([&] {
+    for (const auto& [key, value] : entries()) {
+      if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+      errors.add(value.file(), value.line(), value.field(), unknown_key_message(key, allowed));
+    }
+  });
 }
 
 std::vector<YamlValue> YamlValue::items() const {

@@ -1,5 +1,7 @@
 #include "parameter_catalog.hpp"
 
+#include "motoflex/model/joint_units.hpp"
+
 namespace motoflex::detail {
 
 std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
@@ -8,13 +10,16 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
     specs.push_back({name, unit_from_parameter_name(name), neutral, lower, upper});
   };
   for (const auto& a : model.actuators) {
+    // A prismatic joint's names end in m and N (same numbers: these are neutral switches;
+    // a robot that fits them declares its own bounds).
+    const JointUnits u = joint_units(a);
     const std::string joint = "joint." + a.name + ".";
-    add(joint + "friction_nm", 0.0, 0.0, 5.0);
-    add(joint + "viscous_nm_s_per_rad", 0.0, 0.0, 5.0);
-    add(joint + "encoder_offset_rad", 0.0, -0.1, 0.1);
+    add(joint_parameter(a, "friction", u.effort), 0.0, 0.0, 5.0);
+    add(joint_parameter(a, "viscous", u.damping), 0.0, 0.0, 5.0);
+    add(joint_parameter(a, "encoder_offset", u.position), 0.0, -0.1, 0.1);
     add(joint + "encoder_scale", 1.0, 0.9, 1.1);
-    add(joint + "stribeck_nm", 0.0, 0.0, 2.0);
-    add(joint + "stribeck_velocity_rad_s", 0.1, 0.005, 2.0);
+    add(joint_parameter(a, "stribeck", u.effort), 0.0, 0.0, 2.0);
+    add(joint_parameter(a, "stribeck_velocity", u.velocity), 0.1, 0.005, 2.0);
     add(joint + "load_friction", 0.0, 0.0, 0.5);
   }
   add("motor.R_drift_per_s", 0.0, -0.01, 0.05);
@@ -35,8 +40,10 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
     add(joint + "load_friction_external", 0.0, 0.0, 0.5);
     add(joint + "load_friction_stribeck", 0.0, 0.0, 1.0);
     add(joint + "load_friction_external_stribeck", 0.0, 0.0, 1.0);
-    add(joint + "load_friction_quad_per_nm", 0.0, 0.0, 0.01);
-    add(joint + "load_friction_external_quad_per_nm", 0.0, 0.0, 0.01);
+    // Per N·m of torque, or per N of force on a slider (friction_family.hpp).
+    const std::string per = a.prismatic ? "_per_n" : "_per_nm";
+    add(joint + "load_friction_quad" + per, 0.0, 0.0, 0.01);
+    add(joint + "load_friction_external_quad" + per, 0.0, 0.0, 0.01);
     add(joint + "friction_model", 6.0, 1.0, 6.0);
   }
   return specs;

@@ -30,7 +30,8 @@ struct BoxInWorld {
 
 BoxInWorld box_of(const RobotModel& model, const Rollout& rollout, const std::string& link) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    for (const BoxGeom& box : model.bodies[b].boxes) {
+    for (const CollisionShape& box : model.bodies[b].collisions) {
+      if (box.kind != ShapeKind::kBox) continue;
       if (box.link.substr(0, box.link.find('#')) != link) continue;
       const Rollout::BodyState state = rollout.body_state(b);
       BoxInWorld out;

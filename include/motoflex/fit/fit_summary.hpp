@@ -18,6 +18,10 @@ struct FittedParameter {
   double upper = 0.0;
   double value = 0.0;
   bool log_scale = false;
+  // Relative fitness change per bound-width around the best point (finite differences of 1 %
+  // of the range; < 0: not measured). Below 0.1 the training data cannot determine the value.
+  double sensitivity = -1.0;
+  bool undetermined() const { return sensitivity >= 0.0 && sensitivity < 0.1; }
   // Where the value sits between its bounds, 0…1 (log scale where searched so); a value at a
   // bound (< 1 % or > 99 %) usually means the bounds cut the optimum off.
   double bound_fraction() const;
