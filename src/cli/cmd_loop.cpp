@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "motoflex/effects/effect_loop.hpp"
 #include "report_after_run.hpp"
 
@@ -60,8 +61,9 @@ CommandRunner add_loop_command(CLI::App& app) {
   sub->add_option("--out", args->out, "loop folder (one run folder per fit inside)");
   sub->add_option("--data", args->data, "training logs (folder of CSV or BAM JSON logs)");
   sub->add_option("--validation", args->validation, "validation logs (CSV or BAM JSON)");
-  sub->add_option("--threads", args->threads, "threads evaluating individuals");
-  sub->add_option("--seed", args->seed, "random seed");
+  sub->add_option("--threads", args->threads, "threads evaluating individuals")
+      ->check(thread_count());
+  sub->add_option("--seed", args->seed, "random seed")->check(seed_value());
   return [args] { return run_loop_command(*args); };
 }
 

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "motoflex/effects/effect_signature.hpp"
 #include "motoflex/effects/loop_report.hpp"
 #include "motoflex/fit/fit_run.hpp"
@@ -50,7 +51,8 @@ CommandRunner add_residuals_command(CLI::App& app) {
       "residuals", "analyse the residual of a finished fit and rank the effects that explain it");
   sub->add_option("run_dir", args->run_dir, "run folder of a finished `motoflex fit`")->required();
   sub->add_option("--out", args->out, "output folder (default: <run_dir>/residuals)");
-  sub->add_option("--threads", args->threads, "threads for the probe rollouts");
+  sub->add_option("--threads", args->threads, "threads for the probe rollouts")
+      ->check(thread_count());
   sub->add_option("--effects", args->effects, "candidate effects (default: all)")->delimiter(',');
   return [args] { return run_residuals(*args); };
 }

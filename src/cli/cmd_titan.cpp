@@ -9,6 +9,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "option_checks.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/studies/titan/titan_paper_study.hpp"
 #include "motoflex/studies/titan/titan_study_config.hpp"
@@ -77,7 +78,8 @@ CommandRunner add_titan_command(CLI::App& app) {
   sub->add_option("--out", args->out, "output folder (titan.json, report.md, CSV, PNG)")
       ->required();
   sub->add_option("--threads", args->threads,
-                  "threads for the study's rollouts (the timing run always uses one)");
+                  "threads for the study's rollouts (the timing run always uses one)")
+      ->check(thread_count());
   sub->add_flag("--no-plots", args->no_plots, "skip the PNG figures");
   return [args] { return run(*args); };
 }
