@@ -62,14 +62,12 @@ void RunDir::take_lock() {
 
 RunDirState RunDir::start() {
   const fs::path dir = dir_;
+  // The lock first: a second writer learns the running one's PID whatever the folder holds.
+  take_lock();
   if (fs::exists(dir / "checkpoint.json")) {
     throw InputError(dir.string(), 0, "out",
                      "already holds a fit; continue it with `motoflex resume " + dir.string() +
                          "` or choose another --out");
-  }
-  take_lock();
-  if (fs::exists(dir / "checkpoint.json")) {  // written between the test and the lock
-    throw InputError(dir.string(), 0, "out", "already holds a fit; choose another --out");
   }
   write_file_atomically((dir / "generations.csv").string(), kCsvHeader);
   return {};

@@ -339,8 +339,9 @@ void check_time_axis(const JointLog& log, const std::optional<Sidecar>& sidecar,
     throw InputError(sidecar->path, sidecar->rate_line, "rate_hz",
                      shortest(sidecar->meta.rate_hz) + " Hz, but the rows of " + csv_path +
                          " are " + shortest(rows_hz) + " Hz apart (median)" +
-                         (ratio > 500.0 && ratio < 2000.0 ? ": times in ms? (`units: {time: ms}`)"
-                                                           : ""));
+                         // Times in ms read as s: rows 1000x further apart than declared.
+                         (ratio > 0.0005 && ratio < 0.002 ? ": times in ms? (`units: {time: ms}`)"
+                                                          : ""));
   }
 }
 

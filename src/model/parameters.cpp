@@ -174,6 +174,8 @@ nlohmann::json parse_without_duplicates(const std::string& text, const std::stri
   } catch (const nlohmann::json::parse_error& error) {
     throw InputError(source, line_at_byte(text, error.byte), "",
                      std::string("invalid JSON: ") + error.what());
+  } catch (const nlohmann::json::exception& error) {  // e.g. 406: a number beyond double
+    throw InputError(source, 0, "", std::string("invalid JSON: ") + error.what());
   }
   if (!duplicate.empty()) throw InputError(source, 0, duplicate, "given twice");
   return document;
