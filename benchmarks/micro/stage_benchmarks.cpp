@@ -9,6 +9,7 @@
 
 #include "motoflex/scenario/scenario.hpp"
 #include "motoflex/sim/actuator/dc_motor.hpp"
+#include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/gear_train.hpp"
 #include "motoflex/sim/actuator/pid.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
@@ -57,10 +58,15 @@ void BM_GearTrain(benchmark::State& state) {
 BENCHMARK(BM_GearTrain)->Arg(1)->Arg(10)->Arg(100);
 
 void BM_JointFriction(benchmark::State& state) {
-  JointFrictionParams friction{0.3, 0.1, 0.2, 0.1, 0.05};
+  FrictionParams friction;
+  friction.coulomb_nm = 0.3;
+  friction.viscous_nm_s_per_rad = 0.1;
+  friction.stribeck_nm = 0.2;
+  friction.stribeck_velocity_rad_s = 0.1;
+  friction.load_motor = 0.05;
   double rate = 0.5;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(joint_friction(friction, rate, 1.0));
+    benchmark::DoNotOptimize(joint_friction(friction, rate, 1.0, 0.2));
     rate = -rate;
   }
 }
