@@ -17,8 +17,8 @@ namespace motoflex::fuzz {
 
 inline const std::filesystem::path& scratch_dir() {
   static const std::filesystem::path dir = [] {
-    const auto path = std::filesystem::temp_directory_path() /
-                      ("motoflex_fuzz_" + std::to_string(::getpid()));
+    const auto path =
+        std::filesystem::temp_directory_path() / ("motoflex_fuzz_" + std::to_string(::getpid()));
     std::filesystem::create_directories(path);
     return path;
   }();
@@ -26,8 +26,8 @@ inline const std::filesystem::path& scratch_dir() {
 }
 
 inline void write_file(const std::filesystem::path& path, std::string_view text) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(text.data(),
-                                                                 static_cast<long>(text.size()));
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(text.data(), static_cast<long>(text.size()));
 }
 
 // The input before and after the first line "=====" (the second part empty without one).

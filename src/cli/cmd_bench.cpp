@@ -9,13 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "option_checks.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/motion/keyframe_motion.hpp"
 #include "motoflex/scenario/scenario.hpp"
 #include "motoflex/sim/parallel_rollouts.hpp"
 #include "motoflex/sim/robot_parameter_check.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -110,8 +110,7 @@ CommandRunner add_bench_command(CLI::App& app) {
   sub->add_option("--substeps", args->substeps, "gear sub-steps per physics step")
       ->check(CLI::Range(1, 10000));
   sub->add_flag("--no-universal", args->no_universal, "keep hinge pairs as two hinges");
-  sub->add_option("--rollouts", args->rollouts, "number of rollouts")
-      ->check(CLI::Range(1, 100000));
+  sub->add_option("--rollouts", args->rollouts, "number of rollouts")->check(CLI::Range(1, 100000));
   sub->add_option("--threads", args->threads, "OpenMP threads")->check(thread_count());
   return [args] { return run(*args); };
 }

@@ -11,11 +11,11 @@
 #include <string>
 
 #include "commands.hpp"
-#include "option_checks.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/studies/seed001/seed001_config.hpp"
 #include "motoflex/studies/seed001/seed001_report.hpp"
 #include "motoflex/studies/seed001/seed001_study.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {

@@ -15,7 +15,6 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "option_checks.hpp"
 #include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/export/exporter.hpp"
@@ -23,6 +22,7 @@
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/motion/log_commands.hpp"
 #include "motoflex/sim/robot_parameter_check.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {

@@ -10,11 +10,11 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "option_checks.hpp"
 #include "fit_on_ranks.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/fit_session.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {

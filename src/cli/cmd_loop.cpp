@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "option_checks.hpp"
 #include "motoflex/effects/effect_loop.hpp"
+#include "option_checks.hpp"
 #include "report_after_run.hpp"
 
 namespace motoflex::cli {

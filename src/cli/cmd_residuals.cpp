@@ -6,11 +6,11 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "option_checks.hpp"
 #include "motoflex/effects/effect_signature.hpp"
 #include "motoflex/effects/loop_report.hpp"
 #include "motoflex/fit/fit_run.hpp"
 #include "motoflex/model/effect_library.hpp"
+#include "option_checks.hpp"
 #include "report_after_run.hpp"
 
 namespace motoflex::cli {

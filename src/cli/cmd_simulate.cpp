@@ -13,13 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "option_checks.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/io/plot_script.hpp"
 #include "motoflex/scenario/scenario.hpp"
 #include "motoflex/scenario/truth_file.hpp"
 #include "motoflex/sim/rollout_log.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {

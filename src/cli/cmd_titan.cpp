@@ -9,11 +9,11 @@
 #include <string>
 
 #include "commands.hpp"
-#include "option_checks.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/studies/titan/titan_paper_study.hpp"
 #include "motoflex/studies/titan/titan_study_config.hpp"
 #include "motoflex/studies/titan/titan_study_report.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {

@@ -15,8 +15,8 @@ std::string integer_error(const std::string& text, std::int64_t min, std::int64_
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (ec == std::errc::result_out_of_range) {
-    return "'" + text + "' is out of range (" + std::to_string(min) + " to " +
-           std::to_string(max) + ")";
+    return "'" + text + "' is out of range (" + std::to_string(min) + " to " + std::to_string(max) +
+           ")";
   }
   if (ec != std::errc() || ptr != end) return "'" + text + "' is not a whole number";
   if (value < min || value > max) {
@@ -49,13 +49,13 @@ CLI::Validator thread_count() {
 }
 
 CLI::Validator seed_value() {
-  return CLI::Validator([](std::string& s) { return integer_error(s, 0, kMaxInt64); },
-                        "INT >= 0", "seed_value");
+  return CLI::Validator([](std::string& s) { return integer_error(s, 0, kMaxInt64); }, "INT >= 0",
+                        "seed_value");
 }
 
 CLI::Validator positive_count() {
-  return CLI::Validator([](std::string& s) { return integer_error(s, 1, kMaxInt64); },
-                        "INT >= 1", "positive_count");
+  return CLI::Validator([](std::string& s) { return integer_error(s, 1, kMaxInt64); }, "INT >= 1",
+                        "positive_count");
 }
 
 CLI::Validator positive_seconds() {
@@ -64,8 +64,8 @@ CLI::Validator positive_seconds() {
 }
 
 CLI::Validator non_negative_seconds() {
-  return CLI::Validator([](std::string& s) { return number_error(s, 0.0, true); },
-                        "SECONDS >= 0", "non_negative_seconds");
+  return CLI::Validator([](std::string& s) { return number_error(s, 0.0, true); }, "SECONDS >= 0",
+                        "non_negative_seconds");
 }
 
 }  // namespace motoflex::cli

@@ -37,9 +37,9 @@ FolderLock::FolderLock(const std::string& folder) {
   const std::string path = (fs::path(folder) / kFileName).string();
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
   if (fd_ < 0) {
-    throw InputError(folder, 0, "out",
-                     "cannot create the lock file " + std::string(kFileName) + ": " +
-                         std::strerror(errno));
+    throw InputError(
+        folder, 0, "out",
+        "cannot create the lock file " + std::string(kFileName) + ": " + std::strerror(errno));
   }
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     const int lock_error = errno;

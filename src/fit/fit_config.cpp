@@ -69,9 +69,9 @@ ParameterSet apply_fixed(const FitSpec& spec, ParameterSet base) {
       }
       const ParameterDomain& domain = base.registry().domain(*base.registry().find(name));
       if (!domain.contains(value)) {
-        throw error_at(where_of(spec.fixed_where, i, spec.root),
-                       name + " = " + number_text(value) + " is outside its domain (" +
-                           domain.describe() + ")");
+        throw error_at(where_of(spec.fixed_where, i, spec.root), name + " = " + number_text(value) +
+                                                                     " is outside its domain (" +
+                                                                     domain.describe() + ")");
       }
       base.set(name, value);
     });
@@ -88,8 +88,8 @@ void check_free_domain(const FreeParameterSpec& spec, const ParameterRegistry& r
     const ParameterDomain& domain = registry.domain(*registry.find(target));
     if (!domain.contains_interval(p.lower, p.upper)) {
       throw error_at(spec.where, "bounds [" + number_text(p.lower) + ", " + number_text(p.upper) +
-                                     "] leave the domain of " + target + " (" +
-                                     domain.describe() + ")");
+                                     "] leave the domain of " + target + " (" + domain.describe() +
+                                     ")");
     }
   }
 }

@@ -65,7 +65,8 @@ void FitProblem::note_invalid(const std::string& reason) {
   const std::lock_guard<std::mutex> lock(reasons_mutex_);
   invalid_reasons_.insert(reason);
   // Keep the first reasons in sorted order: the same set for any evaluation order.
-  while (invalid_reasons_.size() > kMaxInvalidReasons) invalid_reasons_.erase(--invalid_reasons_.end());
+  while (invalid_reasons_.size() > kMaxInvalidReasons)
+    invalid_reasons_.erase(--invalid_reasons_.end());
 }
 
 std::vector<std::uint64_t> FitProblem::counters() const {
@@ -92,7 +93,7 @@ void FitProblem::evaluate_batch(const std::vector<std::vector<double>>& xs,
     FitnessBreakdown result;
     try {
       result = config_.train->evaluate(config_.space->apply(xs[k]), threshold, nullptr,
-                                        context.spare_threads);
+                                       context.spare_threads);
     } catch (const std::bad_alloc&) {
       throw;  // the machine, not the candidate
     } catch (const std::exception& error) {

@@ -82,7 +82,8 @@ RunDirState RunDir::resume(motoflex_es::Strategy& strategy, FitProblem& problem)
   if (!fs::exists(checkpoint_path)) {
     throw InputError(dir_, 0, "checkpoint.json",
                      "missing: the fit stopped before its first checkpoint; start it again with "
-                     "`motoflex fit " + config_.path + " --out " + dir_ + "`");
+                     "`motoflex fit " +
+                         config_.path + " --out " + dir_ + "`");
   }
   if (!fs::exists(fs::path(dir_) / "generations.csv")) {
     std::fprintf(stderr,

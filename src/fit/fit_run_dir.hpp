@@ -29,8 +29,9 @@ class RunDir {
   // A new run: takes the folder's lock (FolderLock), refuses a folder that holds a fit,
   // removes temporary files a killed run left, creates generations.csv.
   RunDirState start();
-  // Takes the folder's lock, removes stale temporary files, loads the checkpoint into `strategy` and `problem`'s counters; drops generations.csv rows
-  // the checkpoint does not have (a kill between the row and the checkpoint).
+  // Takes the folder's lock, removes stale temporary files, loads the checkpoint into `strategy`
+  // and `problem`'s counters; drops generations.csv rows the checkpoint does not have (a kill
+  // between the row and the checkpoint).
   RunDirState resume(motoflex_es::Strategy& strategy, FitProblem& problem);
   void write_run_json() const;
   void append_generation(const motoflex_es::GenerationReport& report, double mean_sigma,

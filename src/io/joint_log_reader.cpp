@@ -325,8 +325,7 @@ void check_time_axis(const JointLog& log, const std::optional<Sidecar>& sidecar,
   const double span_s = log.time_s.back() - log.time_s.front();
   if (span_s > kMaxLogSpanS) {
     throw InputError(csv_path, last_line, "time_s",
-                     "the log spans " + shortest(span_s) + " s (at most " +
-                         shortest(kMaxLogSpanS) +
+                     "the log spans " + shortest(span_s) + " s (at most " + shortest(kMaxLogSpanS) +
                          " s): a time jump, or times in ms? (sidecar `units: {time: ms}`)");
   }
   if (!sidecar) return;
@@ -336,12 +335,12 @@ void check_time_axis(const JointLog& log, const std::optional<Sidecar>& sidecar,
   const double rows_hz = 1.0 / steps[steps.size() / 2];
   const double ratio = rows_hz / sidecar->meta.rate_hz;
   if (ratio < 0.5 || ratio > 2.0) {
-    throw InputError(sidecar->path, sidecar->rate_line, "rate_hz",
-                     shortest(sidecar->meta.rate_hz) + " Hz, but the rows of " + csv_path +
-                         " are " + shortest(rows_hz) + " Hz apart (median)" +
-                         // Times in ms read as s: rows 1000x further apart than declared.
-                         (ratio > 0.0005 && ratio < 0.002 ? ": times in ms? (`units: {time: ms}`)"
-                                                          : ""));
+    throw InputError(
+        sidecar->path, sidecar->rate_line, "rate_hz",
+        shortest(sidecar->meta.rate_hz) + " Hz, but the rows of " + csv_path + " are " +
+            shortest(rows_hz) + " Hz apart (median)" +
+            // Times in ms read as s: rows 1000x further apart than declared.
+            (ratio > 0.0005 && ratio < 0.002 ? ": times in ms? (`units: {time: ms}`)" : ""));
   }
 }
 

@@ -21,7 +21,8 @@ std::string last_line(const std::string& text) {
   std::size_t end = text.find_last_not_of(" \n\r\t");
   if (end == std::string::npos) return "no output";
   const std::size_t begin = text.rfind('\n', end);
-  std::string line = text.substr(begin == std::string::npos ? 0 : begin + 1, end + 1 - (begin == std::string::npos ? 0 : begin + 1));
+  std::string line = text.substr(begin == std::string::npos ? 0 : begin + 1,
+                                 end + 1 - (begin == std::string::npos ? 0 : begin + 1));
   if (line.size() > 200) line = line.substr(0, 197) + "...";
   return line;
 }
@@ -29,8 +30,7 @@ std::string last_line(const std::string& text) {
 }  // namespace
 
 bool run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
-  const std::filesystem::path path =
-      std::filesystem::path(data_directory()) / "scripts" / script;
+  const std::filesystem::path path = std::filesystem::path(data_directory()) / "scripts" / script;
   if (!std::filesystem::exists(path)) {
     std::fprintf(stderr, "motoflex: warning: no plot (missing %s)\n", path.c_str());
     return false;

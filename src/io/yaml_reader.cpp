@@ -188,8 +188,8 @@ YamlValue YamlValue::load_file(const std::string& path) {
 
 YamlValue YamlValue::parse(std::string_view text, const std::string& file) {
   if (text.size() > kMaxYamlBytes) {
-    throw InputError(file, 0, "", "larger than " + std::to_string(kMaxYamlBytes >> 20) +
-                                      " MB; not a config");
+    throw InputError(file, 0, "",
+                     "larger than " + std::to_string(kMaxYamlBytes >> 20) + " MB; not a config");
   }
   YAML::Node root;
   int documents = 0;
@@ -229,7 +229,8 @@ void YamlValue::require_map() const {
 }
 
 void YamlValue::require_sequence() const {
-  if (!node_->IsSequence() && !node_->IsNull()) fail("expected a sequence, got " + describe(*node_));
+  if (!node_->IsSequence() && !node_->IsNull())
+    fail("expected a sequence, got " + describe(*node_));
 }
 
 void YamlValue::require_plain_scalar(const char* expected) const {

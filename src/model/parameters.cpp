@@ -150,7 +150,8 @@ std::string format_number(double value) {
 
 int line_at_byte(const std::string& text, std::size_t byte) {
   const std::size_t end = std::min(byte, text.size());
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(end), '\n'));
+  return 1 +
+         static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(end), '\n'));
 }
 
 // Parses `text`, rejecting a key that appears twice in one object (nlohmann keeps the last

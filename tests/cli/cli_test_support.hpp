@@ -27,7 +27,8 @@ inline CommandResult run_motoflex_with_timeout(const std::string& arguments, int
   std::filesystem::create_directories(dir);
   const auto err =
       dir / ("stderr_" + std::to_string(getpid()) + "_" + std::to_string(++calls) + ".txt");
-  const std::string prefix = timeout_s > 0 ? "timeout -s KILL " + std::to_string(timeout_s) + " " : "";
+  const std::string prefix =
+      timeout_s > 0 ? "timeout -s KILL " + std::to_string(timeout_s) + " " : "";
   const std::string command =
       prefix + std::string(MOTOFLEX_TEST_BINARY) + " " + arguments + " 2> " + err.string();
   CommandResult result;

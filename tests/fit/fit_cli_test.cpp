@@ -108,8 +108,8 @@ TEST(FitCli, TwoWritersCannotShareAFolder) {
   ASSERT_TRUE(wait_for_generations(dir / "run", 1, pid));
   const std::string rows_before = read_text(dir / "run" / "generations.csv");
   // A second fit and a resume into the running fit's folder fail at once, naming its PID.
-  for (const std::string& command : {"fit " + fit + " --out " + (dir / "run").string(),
-                                    "resume " + (dir / "run").string()}) {
+  for (const std::string& command :
+       {"fit " + fit + " --out " + (dir / "run").string(), "resume " + (dir / "run").string()}) {
     const CommandResult second = run_motoflex(command);
     EXPECT_EQ(second.exit_code, 2) << command;
     EXPECT_NE(second.stderr_text.find("pid " + std::to_string(pid)), std::string::npos)

@@ -66,8 +66,9 @@ std::size_t temp_files(const fs::path& dir) {
 TEST(FitKill, KilledAtRandomMomentsEndsIdentical) {
   const fs::path dir = fresh_dir("fit_kill_random");
   record_pendulum_log(dir / "data", "sin_sin");
-  const std::string fit = write_pendulum_fit(
-      dir, dir / "data", "{kind: mu_plus_lambda, mu: 4, lambda: 12, kappa: 3}", "{generations: 12}");
+  const std::string fit =
+      write_pendulum_fit(dir, dir / "data", "{kind: mu_plus_lambda, mu: 4, lambda: 12, kappa: 3}",
+                         "{generations: 12}");
   const auto start = std::chrono::steady_clock::now();
   ASSERT_EQ(run_motoflex("fit " + fit + " --out " + (dir / "whole").string()).exit_code, 0);
   const auto whole_ms = std::chrono::duration_cast<std::chrono::milliseconds>(

@@ -18,9 +18,9 @@ namespace fs = std::filesystem;
 TEST(InvalidCandidate, ScoredWorstCountedNeverThrown) {
   const fs::path dir = fresh_dir("invalid_candidate");
   record_pendulum_log(dir / "data", "sin_sin");
-  const FitConfig config = load_fit_config(
-      write_pendulum_fit(dir, dir / "data", "{kind: cma_es}", "{evaluations: 10}",
-                         "out: " + (dir / "run").string() + "\n"));
+  const FitConfig config =
+      load_fit_config(write_pendulum_fit(dir, dir / "data", "{kind: cma_es}", "{evaluations: 10}",
+                                         "out: " + (dir / "run").string() + "\n"));
   // The space as the fit built it, then a copy whose R can reach 0 (what a config could ask for
   // before domains were checked): bench.R_ohm is fixed at 2.6 in the base.
   std::vector<FreeParameter> free = config.space->free_parameters();
@@ -53,13 +53,13 @@ TEST(InvalidCandidate, ScoredWorstCountedNeverThrown) {
 TEST(InvalidCandidate, BoundsOutsideTheDomainNameTheParameter) {
   const fs::path dir = fresh_dir("invalid_bounds");
   record_pendulum_log(dir / "data", "sin_sin");
-  const std::string path =
-      write_pendulum_fit(dir, dir / "data", "{kind: cma_es}", "{evaluations: 10}",
-                         "fixed: {bench.R_ohm: 2.6}\n");
+  const std::string path = write_pendulum_fit(dir, dir / "data", "{kind: cma_es}",
+                                              "{evaluations: 10}", "fixed: {bench.R_ohm: 2.6}\n");
   // Replace the friction bounds with ones reaching below 0.
   std::string text = read_text(path);
   const std::string from = "joint.pendulum.friction_nm: {lower: 0.001, upper: 0.5, log: true}";
-  text.replace(text.find(from), from.size(), "joint.pendulum.friction_nm: {lower: -0.1, upper: 0.5}");
+  text.replace(text.find(from), from.size(),
+               "joint.pendulum.friction_nm: {lower: -0.1, upper: 0.5}");
   write_text(path, text);
   try {
     load_fit_config(path);
