@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "motoflex/effects/effect_loop.hpp"
+#include "option_checks.hpp"
 #include "report_after_run.hpp"
 
 namespace motoflex::cli {
@@ -61,8 +62,9 @@ CommandRunner add_loop_command(CLI::App& app) {
   sub->add_option("--out", args->out, "loop folder (one run folder per fit inside)");
   sub->add_option("--data", args->data, "training logs (folder of CSV or BAM JSON logs)");
   sub->add_option("--validation", args->validation, "validation logs (CSV or BAM JSON)");
-  sub->add_option("--threads", args->threads, "threads evaluating individuals");
-  sub->add_option("--seed", args->seed, "random seed");
+  sub->add_option("--threads", args->threads, "threads evaluating individuals")
+      ->check(thread_count());
+  sub->add_option("--seed", args->seed, "random seed")->check(seed_value());
   sub->add_flag("--force", args->force,
                 "go on when the base fit did not converge (every ranking marked unreliable)");
   return [args] { return run_loop_command(*args); };

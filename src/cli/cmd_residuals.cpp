@@ -11,6 +11,7 @@
 #include "motoflex/effects/loop_report.hpp"
 #include "motoflex/fit/fit_run.hpp"
 #include "motoflex/model/effect_library.hpp"
+#include "option_checks.hpp"
 #include "report_after_run.hpp"
 
 namespace motoflex::cli {
@@ -59,7 +60,8 @@ CommandRunner add_residuals_command(CLI::App& app) {
       "residuals", "analyse the residual of a finished fit and rank the effects that explain it");
   sub->add_option("run_dir", args->run_dir, "run folder of a finished `motoflex fit`")->required();
   sub->add_option("--out", args->out, "output folder (default: <run_dir>/residuals)");
-  sub->add_option("--threads", args->threads, "threads for the probe rollouts");
+  sub->add_option("--threads", args->threads, "threads for the probe rollouts")
+      ->check(thread_count());
   sub->add_option("--effects", args->effects, "candidate effects (default: all)")->delimiter(',');
   sub->add_flag("--force", args->force,
                 "rank a fit that did not converge (the ranking is marked unreliable)");

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/core/folder_lock.hpp"
 #include "motoflex/effects/convergence_guard.hpp"
 #include "motoflex/effects/loop_report.hpp"
 #include "motoflex/fit/effect_parameters.hpp"
@@ -225,7 +226,7 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides, 
   }
   const LoopOptions& options = user.loop;
   const fs::path out = user.out_dir;
-  fs::create_directories(out);
+  const FolderLock lock(out.string());  // one loop per folder; each fit locks its own sub-folder
   LoopResult result;
   result.out_dir = out.string();
 

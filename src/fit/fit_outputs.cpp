@@ -103,6 +103,8 @@ FitSummary write_fit_outputs(const FitConfig& config, const FitProblem& problem,
   summary.individuals_stopped_early = problem.stopped_early();
   summary.frames_simulated = problem.frames_simulated();
   summary.frames_saved = problem.frames_saved();
+  summary.invalid_candidates = problem.invalid_candidates();
+  summary.invalid_reasons = problem.invalid_reasons();
   if (result.best_x.empty()) return summary;
 
   const fs::path dir = config.out_dir;
@@ -145,6 +147,9 @@ FitSummary write_fit_outputs(const FitConfig& config, const FitProblem& problem,
   json["early_termination"] = {{"individuals_stopped_early", problem.stopped_early()},
                                {"frames_simulated", problem.frames_simulated()},
                                {"frames_saved", problem.frames_saved()}};
+  // Candidates the model rejected (scored +inf): how many, and why (up to 5 distinct reasons).
+  json["invalid_candidates"] = {{"count", problem.invalid_candidates()},
+                                {"reasons", problem.invalid_reasons()}};
   json["config_hash"] = config.hash;
   write_file_atomically((dir / "summary.json").string(), json.dump(2) + "\n");
   write_simulated_logs((dir / "best").string(), *config.train, train,

@@ -83,6 +83,10 @@ std::string FitSummary::full_report() const {
            " individuals stopped, " + std::to_string(frames_saved) + " of " +
            std::to_string(frames_simulated + frames_saved) + " frames saved\n";
   }
+  if (invalid_candidates > 0) {
+    out += "\n  invalid candidates (scored worst): " + std::to_string(invalid_candidates) + "\n";
+    for (const auto& reason : invalid_reasons) out += "    " + reason + "\n";
+  }
   return out;
 }
 

@@ -1,6 +1,10 @@
 #include "parameter_catalog.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "motoflex/model/joint_units.hpp"
+#include "motoflex/model/parameter_domain.hpp"
 
 namespace motoflex::detail {
 
@@ -50,3 +54,93 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
 }
 
 }  // namespace motoflex::detail
+
+namespace motoflex {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// One rule of the catalog: names whose last dotted part is `leaf` (or, when `full` is set,
+// the whole name) take `domain`. More specific rules come first.
+struct DomainRule {
+  const char* name;
+  bool full;  // match the whole dotted name rather than its last part
+  ParameterDomain domain;
+};
+
+constexpr ParameterDomain kPositive{0.0, kInf, true, false, false};
+constexpr ParameterDomain kNonNegative{0.0, kInf, false, false, false};
+constexpr ParameterDomain kUnitInterval{0.0, 1.0, false, false, false};
+
+// Why each one: the model's own invariants (src/sim/actuator/*: GearTrain, DcMotor, the
+// firmware, the friction family, the encoder), ODE's (CFM >= 0, ERP in [0, 1], mu >= 0).
+const DomainRule kDomainRules[] = {
+    {"flex.spring_nm_per_rad", true, kPositive},  // a link spring of 0 has no rest pose
+    {"world.erp", true, kUnitInterval},
+    {"world.cfm", true, kNonNegative},
+    {"contact.soft_erp", true, kUnitInterval},
+    {"contact.soft_cfm", true, kNonNegative},
+    {"contact.mu", true, kNonNegative},
+    {"contact.slip", true, kNonNegative},
+    {"bench.max_duty", true, kUnitInterval},
+    {"R_ohm", false, kPositive},
+    {"L_h", false, kNonNegative},
+    {"Kt_nm_per_a", false, kPositive},
+    {"ratio", false, kPositive},
+    {"gear_ratio", false, kPositive},
+    {"mass_kg_m2", false, kPositive},
+    {"mass_kg", false, kPositive},
+    {"length_m", false, kPositive},
+    {"backlash_rad", false, kNonNegative},
+    {"spring_nm_per_rad", false, kNonNegative},
+    {"viscous_nm_s_per_rad", false, kNonNegative},
+    {"motor_viscous_nm_s_per_rad", false, kNonNegative},
+    {"damping_nm_s_per_rad", false, kNonNegative},
+    {"friction_nm", false, kNonNegative},
+    {"stribeck_nm", false, kNonNegative},
+    {"stribeck_velocity_rad_s", false, kPositive},
+    {"stribeck_exponent", false, kPositive},
+    {"load_friction", false, kNonNegative},
+    {"load_friction_external", false, kNonNegative},
+    {"load_friction_stribeck", false, kNonNegative},
+    {"load_friction_external_stribeck", false, kNonNegative},
+    {"load_friction_quad_per_nm", false, kNonNegative},
+    {"load_friction_external_quad_per_nm", false, kNonNegative},
+    {"friction_model", false, {1.0, 6.0, false, false, true}},  // BAM's M1-M6
+    {"resolution_bits", false, {0.0, 32.0, false, false, true}},
+    {"noise_rad", false, kNonNegative},
+    {"delay_s", false, kNonNegative},
+    {"encoder_scale", false, kPositive},
+    {"armature_kg_m2", false, kNonNegative},
+    {"supply_v", false, kNonNegative},
+    {"supply_sag_ohm", false, kNonNegative},
+    {"current_limit_a", false, kNonNegative},
+    {"torque_max_nm", false, kNonNegative},
+    {"torque_off_s", false, kNonNegative},
+    {"no_load_speed_rad_s", false, kPositive},
+    {"ticks_per_rev", false, {1.0, kInf, false, false, true}},
+    {"pwm_full_scale", false, kPositive},
+};
+
+// Gains of a controller (kp, ki_v_per_rad_s, gain_per_s, kd_divisor, ...): never negative.
+bool is_gain(const std::string& leaf) {
+  for (const char* prefix : {"kp", "ki", "kd", "gain_per_s", "pwm_limit", "deadband"}) {
+    if (leaf.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+ParameterDomain parameter_domain(const std::string& name) {
+  const std::size_t dot = name.rfind('.');
+  const std::string leaf = dot == std::string::npos ? name : name.substr(dot + 1);
+  for (const DomainRule& rule : kDomainRules) {
+    if (rule.full ? name == rule.name : leaf == rule.name) return rule.domain;
+  }
+  if (leaf.find("_divisor") != std::string::npos) return kPositive;
+  if (is_gain(leaf)) return kNonNegative;
+  return {};
+}
+
+}  // namespace motoflex

@@ -1,5 +1,8 @@
 #include "motoflex/sim/robot_parameter_check.hpp"
 
+#include <set>
+#include <sstream>
+
 #include "motoflex/core/error_collector.hpp"
 #include "motoflex/io/yaml_reader.hpp"
 #include "motoflex/model/robot_loader.hpp"
@@ -139,8 +142,21 @@ void check_robot_parameters(const RobotModel& model, ErrorCollector& errors, boo
     errors.add(file, line, "parameters." + name,
                "unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
   }
-  collect_unknown_laws(model, "", errors);
-  collect_missing(model, "", errors, file, model.source.parameters_line, "parameters", "");
+  // A default outside the parameter's domain (a gear ratio of 0, a negative contact.mu) is a
+  // model that cannot be simulated as written.
+  const ParameterRegistry& registry = model.parameters;
+  for (const auto& [name, line] : model.source.parameter_lines) {
+    const auto index = registry.find(name);
+    if (!index || registry.domain(*index).contains(registry.spec(*index).default_value)) continue;
+    std::ostringstream value;
+    value << registry.spec(*index).default_value;
+    errors.add(file, line, "parameters." + name,
+               "default " + value.str() + " is outside its domain (" +
+                   registry.domain(*index).describe() + ")");
+  }
+  if (collect_unknown_laws(model, "", errors)) {
+    collect_missing(model, "", errors, file, model.source.parameters_line, "parameters", "");
+  }
 }
 
 void check_robot_parameters(const RobotModel& model) {

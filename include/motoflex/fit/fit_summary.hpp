@@ -50,6 +50,9 @@ struct FitSummary {
   std::uint64_t individuals_stopped_early = 0;
   std::uint64_t frames_simulated = 0;
   std::uint64_t frames_saved = 0;
+  // Candidates the model rejected (a parameter outside what the model accepts), scored +inf.
+  std::uint64_t invalid_candidates = 0;
+  std::vector<std::string> invalid_reasons;  // up to 5 distinct, sorted
   nlohmann::ordered_json details;  // summary.json as written (per-joint and per-log errors, ...)
 
   // "nao_quick: max_generations (not converged) after 3 generations, 36 evaluations: best

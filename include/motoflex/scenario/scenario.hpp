@@ -59,6 +59,7 @@ struct ScenarioOverrides {
   // key that is not one.
   std::map<std::string, double> walk_options;
   std::optional<std::string> parameters_json;  // --params P.json
+  bool allow_out_of_bounds = false;            // --allow-out-of-bounds (for parameters_json)
   std::optional<StepSolver> solver;            // --solver step|quick
   std::optional<std::string> servo;            // --servo (a servo law's name)
   std::optional<int> flex_sub_bodies;
