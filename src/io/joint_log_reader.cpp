@@ -29,10 +29,12 @@ struct Column {
   double scale = 1.0;          // to s or rad
   bool check_degrees = false;  // an angle whose unit nobody declared
   bool declared_rad = false;   // an angle the sidecar says is in rad
+  mutable bool warned_turns = false;  // the "more than two turns" warning was printed
 };
 
-// A joint, declared in rad, that turned more than two turns: the numbers are degrees. (A
-// degree log read as rad gave a fit 3511° RMS of error without a word.)
+// A joint, declared in rad, that turned more than two turns: the numbers may be degrees (a
+// degree log read as rad gave a fit 3511° RMS of error without a word), or a continuous joint
+// counting its turns. The declaration wins; the reader warns once per column.
 constexpr double kMaxDeclaredRad = 4.0 * std::numbers::pi;
 // Longest time a log may span: the fit simulates all of it (a row at 1e7 s would run for days).
 constexpr double kMaxLogSpanS = 3600.0;
@@ -298,12 +300,12 @@ double parse_value(std::string_view text, const std::string& path, int line,
 // An angle beyond ±2π in a column whose unit nobody declared is almost surely in degrees.
 void check_not_degrees(double value, const Column& column, const std::string& path, int line,
                        const std::string& sidecar, bool has_sidecar) {
-  if (column.declared_rad && std::abs(value) > kMaxDeclaredRad) {
-    throw InputError(path, line, column.name,
-                     "angle " + shortest(value) +
-                         " rad is more than two turns: the values look like degrees, but the "
-                         "sidecar " +
-                         sidecar + " declares rad");
+  if (column.declared_rad && std::abs(value) > kMaxDeclaredRad && !column.warned_turns) {
+    column.warned_turns = true;
+    std::fprintf(stderr,
+                 "motoflex: warning: %s:%d: %s: angle %s rad is more than two turns: a continuous "
+                 "joint, or degrees although the sidecar %s declares rad?\n",
+                 path.c_str(), line, column.name.c_str(), shortest(value).c_str(), sidecar.c_str());
   }
   if (!column.check_degrees || std::abs(value) <= 2.0 * std::numbers::pi) return;
   const std::string group = column.kind == ColumnKind::kCommanded  ? "cmd"
@@ -319,8 +321,10 @@ void check_not_degrees(double value, const Column& column, const std::string& pa
 }
 
 // The rows' time axis against the limits and the sidecar: a bounded span, and a row spacing
-// that matches the declared rate_hz (times in ms read as s are 1000x off).
-void check_time_axis(const JointLog& log, const std::optional<Sidecar>& sidecar,
+// against the declared rate_hz. A factor of 100 or more is an error (times in ms read as s are
+// 1000x off); a smaller disagreement (a log thinned or resampled after its sidecar was written,
+// a nominal rate) is a warning, since the fit uses the rows' own times.
+void check_time_axis(JointLog& log, const std::optional<Sidecar>& sidecar,
                      const std::string& csv_path, int last_line) {
   const double span_s = log.time_s.back() - log.time_s.front();
   if (span_s > kMaxLogSpanS) {
@@ -334,13 +338,18 @@ void check_time_axis(const JointLog& log, const std::optional<Sidecar>& sidecar,
   std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
   const double rows_hz = 1.0 / steps[steps.size() / 2];
   const double ratio = rows_hz / sidecar->meta.rate_hz;
-  if (ratio < 0.5 || ratio > 2.0) {
+  const std::string disagreement = shortest(sidecar->meta.rate_hz) + " Hz, but the rows of " +
+                                   csv_path + " are " + shortest(rows_hz) + " Hz apart (median)";
+  if (ratio < 0.01 || ratio > 100.0) {
     throw InputError(
         sidecar->path, sidecar->rate_line, "rate_hz",
-        shortest(sidecar->meta.rate_hz) + " Hz, but the rows of " + csv_path + " are " +
-            shortest(rows_hz) + " Hz apart (median)" +
+        disagreement +
             // Times in ms read as s: rows 1000x further apart than declared.
             (ratio > 0.0005 && ratio < 0.002 ? ": times in ms? (`units: {time: ms}`)" : ""));
+  }
+  if (ratio < 0.5 || ratio > 2.0) {
+    log.warnings.push_back(sidecar->path + ":" + std::to_string(sidecar->rate_line) +
+                           ": rate_hz: " + disagreement + " (the rows' times are used)");
   }
 }
 

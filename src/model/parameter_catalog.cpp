@@ -117,7 +117,7 @@ const DomainRule kDomainRules[] = {
     {"current_limit_a", false, kNonNegative},
     {"torque_max_nm", false, kNonNegative},
     {"torque_off_s", false, kNonNegative},
-    {"no_load_speed_rad_s", false, kPositive},
+    {"no_load_speed_rad_s", false, kNonNegative},  // 0: no torque–speed curve
     {"ticks_per_rev", false, {1.0, kInf, false, false, true}},
     {"pwm_full_scale", false, kPositive},
 };

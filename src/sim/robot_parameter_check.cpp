@@ -154,9 +154,10 @@ void check_robot_parameters(const RobotModel& model, ErrorCollector& errors, boo
                "default " + value.str() + " is outside its domain (" +
                    registry.domain(*index).describe() + ")");
   }
-  if (collect_unknown_laws(model, "", errors)) {
-    collect_missing(model, "", errors, file, model.source.parameters_line, "parameters", "");
-  }
+  // Missing parameters are reported for the joints whose law is known even when another
+  // joint's law is not (every problem of the folder at once).
+  collect_unknown_laws(model, "", errors);
+  collect_missing(model, "", errors, file, model.source.parameters_line, "parameters", "");
 }
 
 void check_robot_parameters(const RobotModel& model) {
