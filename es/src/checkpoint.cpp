@@ -39,6 +39,8 @@ void write_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
   };
   try {
     motoflex::write_file_atomically(path, document.dump(1) + "\n");
+  } catch (const motoflex::IoError&) {
+    throw;  // a full disk is the machine's problem, not the checkpoint's (exit code 3)
   } catch (const motoflex::InputError& error) {
     throw CheckpointError(error.what());
   }

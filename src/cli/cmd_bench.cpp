@@ -15,6 +15,7 @@
 #include "motoflex/scenario/scenario.hpp"
 #include "motoflex/sim/parallel_rollouts.hpp"
 #include "motoflex/sim/robot_parameter_check.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -101,13 +102,16 @@ CommandRunner add_bench_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("bench", "time rollouts of a robot; prints one JSON line");
   sub->add_option("--robot", args->robot, "robot name (scenarios/robots/<name>) or folder");
   sub->add_option("--solver", args->solver, "step (exact, reproducible) or quick");
-  sub->add_option("--seconds", args->seconds, "simulated seconds per rollout");
+  sub->add_option("--seconds", args->seconds, "simulated seconds per rollout")
+      ->check(positive_seconds());
   sub->add_option("--servo", args->servo, "servo model (default: the robot's)");
-  sub->add_option("--flex", args->flex, "sub-bodies per flexible link (1 = rigid)");
-  sub->add_option("--substeps", args->substeps, "gear sub-steps per physics step");
+  sub->add_option("--flex", args->flex, "sub-bodies per flexible link (1 = rigid)")
+      ->check(CLI::Range(1, 64));
+  sub->add_option("--substeps", args->substeps, "gear sub-steps per physics step")
+      ->check(CLI::Range(1, 10000));
   sub->add_flag("--no-universal", args->no_universal, "keep hinge pairs as two hinges");
-  sub->add_option("--rollouts", args->rollouts, "number of rollouts");
-  sub->add_option("--threads", args->threads, "OpenMP threads");
+  sub->add_option("--rollouts", args->rollouts, "number of rollouts")->check(CLI::Range(1, 100000));
+  sub->add_option("--threads", args->threads, "OpenMP threads")->check(thread_count());
   return [args] { return run(*args); };
 }
 

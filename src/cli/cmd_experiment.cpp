@@ -15,6 +15,7 @@
 #include "motoflex/studies/seed001/seed001_config.hpp"
 #include "motoflex/studies/seed001/seed001_report.hpp"
 #include "motoflex/studies/seed001/seed001_study.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -73,7 +74,8 @@ CommandRunner add_experiment_command(CLI::App& app) {
       ->required();
   sub->add_option("--out", args->out, "output folder (seed001.json, series/, PNG figures)")
       ->required();
-  sub->add_option("--threads", args->threads, "rollouts run at a time (results do not change)");
+  sub->add_option("--threads", args->threads, "rollouts run at a time (results do not change)")
+      ->check(thread_count());
   sub->add_flag("--no-plots", args->no_plots, "skip the PNG figures");
   return [args] { return run(*args); };
 }

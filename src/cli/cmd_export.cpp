@@ -22,6 +22,7 @@
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/motion/log_commands.hpp"
 #include "motoflex/sim/robot_parameter_check.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -61,7 +62,8 @@ nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
           {"steps", c.steps},
           {"mujoco_steps_per_s", c.mujoco_steps_per_s},
           {"motoflex_steps_per_s", c.motoflex_steps_per_s},
-          {"motoflex_end", c.motoflex_end}};
+          {"motoflex_end", c.motoflex_end},
+          {"geoms", c.geoms}};
 }
 
 const Exporter& check_arguments(const ExportArgs& args) {
@@ -176,14 +178,18 @@ CommandRunner add_export_command(CLI::App& app) {
   sub->add_option("--servo", args->servo,
                   "servo law the parameters belong to (default: the robot's)");
   sub->add_option("--flex-sub-bodies", args->flex_sub_bodies,
-                  "split flexible links into N sub-bodies (SDF/MJCF; default 1 = rigid)");
-  sub->add_option("--dt", args->dt_s, "physics step in s (default 0.001)");
+                  "split flexible links into N sub-bodies (SDF/MJCF; default 1 = rigid)")
+      ->check(CLI::Range(1, 64));
+  sub->add_option("--dt", args->dt_s, "physics step in s (default 0.001)")
+      ->check(positive_seconds());
   sub->add_option("--check-mujoco", args->check_log,
                   "mjcf: replay this log's commands in motoflex and MuJoCo and compare angles");
   sub->add_flag("--hold-torso", args->hold_torso,
                 "check: hold the torso in the air (root welded in MuJoCo)");
-  sub->add_option("--settle", args->settle_s, "check: hold the first pose this long first (s)");
-  sub->add_option("--duration", args->duration_s, "check: only the first S seconds of the log");
+  sub->add_option("--settle", args->settle_s, "check: hold the first pose this long first (s)")
+      ->check(non_negative_seconds());
+  sub->add_option("--duration", args->duration_s, "check: only the first S seconds of the log")
+      ->check(positive_seconds());
   sub->add_flag("--no-armature", args->no_armature,
                 "mjcf: leave the armature out (motoflex's ODE joints have none)");
   return [args] { return run(*args); };

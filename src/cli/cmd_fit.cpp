@@ -14,6 +14,7 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/fit_session.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -29,10 +30,14 @@ struct FitArgs {
 };
 
 void add_budget_options(CLI::App* sub, FitArgs& args) {
-  sub->add_option("--threads", args.threads, "OpenMP threads evaluating individuals");
-  sub->add_option("--max-generations", args.max_generations, "stop after this many generations");
-  sub->add_option("--max-evaluations", args.max_evaluations, "stop before exceeding this many");
-  sub->add_option("--max-seconds", args.max_seconds, "stop after this wall time");
+  sub->add_option("--threads", args.threads, "OpenMP threads evaluating individuals")
+      ->check(thread_count());
+  sub->add_option("--max-generations", args.max_generations, "stop after this many generations")
+      ->check(positive_count());
+  sub->add_option("--max-evaluations", args.max_evaluations, "stop before exceeding this many")
+      ->check(positive_count());
+  sub->add_option("--max-seconds", args.max_seconds, "stop after this wall time")
+      ->check(positive_seconds());
 }
 
 void apply_budget(const FitArgs& args, FitOverrides& overrides) {
@@ -65,7 +70,7 @@ CommandRunner add_fit_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("fit", "fit model parameters to joint logs");
   sub->add_option("fit", args->target, "fit config YAML")->required();
   add_budget_options(sub, *args);
-  sub->add_option("--seed", args->seed, "random seed");
+  sub->add_option("--seed", args->seed, "random seed")->check(seed_value());
   sub->add_option("--out", args->out, "run folder (checkpoint, results, plots)");
   sub->add_option("--data", args->data, "folder of training logs");
   sub->add_option("--validation", args->validation, "folder of validation logs");

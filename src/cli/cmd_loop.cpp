@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "motoflex/effects/effect_loop.hpp"
+#include "option_checks.hpp"
 #include "report_after_run.hpp"
 
 namespace motoflex::cli {
@@ -16,6 +17,7 @@ struct LoopArgs {
   std::string out, data, validation;
   int threads = 0;
   long long seed = -1;
+  bool force = false;  // go on from an unconverged base fit (its rankings marked unreliable)
 };
 
 int run_loop_command(const LoopArgs& args) {
@@ -25,7 +27,7 @@ int run_loop_command(const LoopArgs& args) {
   if (!args.validation.empty()) overrides.validation = args.validation;
   if (args.threads > 0) overrides.threads = args.threads;
   if (args.seed >= 0) overrides.seed = static_cast<std::uint64_t>(args.seed);
-  const LoopResult result = run_loop(args.fit, overrides);
+  const LoopResult result = run_loop(args.fit, overrides, args.force);
   // The final model's effects, or "the base model's" when the base lists none (and nothing
   // was added).
   std::printf("loop done: model %s", result.final_model.empty() ? "as the base fit's" : "");
@@ -60,8 +62,11 @@ CommandRunner add_loop_command(CLI::App& app) {
   sub->add_option("--out", args->out, "loop folder (one run folder per fit inside)");
   sub->add_option("--data", args->data, "training logs (folder of CSV or BAM JSON logs)");
   sub->add_option("--validation", args->validation, "validation logs (CSV or BAM JSON)");
-  sub->add_option("--threads", args->threads, "threads evaluating individuals");
-  sub->add_option("--seed", args->seed, "random seed");
+  sub->add_option("--threads", args->threads, "threads evaluating individuals")
+      ->check(thread_count());
+  sub->add_option("--seed", args->seed, "random seed")->check(seed_value());
+  sub->add_flag("--force", args->force,
+                "go on when the base fit did not converge (every ranking marked unreliable)");
   return [args] { return run_loop_command(*args); };
 }
 

@@ -22,6 +22,7 @@ struct RecordArgs {
   std::string truth;
   std::string out;
   std::string truth_out;  // default: <out>/truth
+  bool blind = false;     // the logs' origin does not name the truth file (hidden-effect data)
 };
 
 int run(const RecordArgs& args) {
@@ -43,8 +44,11 @@ int run(const RecordArgs& args) {
     meta.rate_hz = scenario.log_rate_hz;
     meta.motion = scenario.motion_description;
     meta.parameters = scenario.log_parameters;  // experimental conditions, not the truth
-    meta.origin = "motoflex record " + std::filesystem::path(args.truth).filename().string() +
-                  " (" + recording.name + ", seed " + std::to_string(truth.seed) + ")";
+    const std::string truth_name = args.blind
+                                       ? std::string("<truth withheld>")
+                                       : std::filesystem::path(args.truth).filename().string();
+    meta.origin = "motoflex record " + truth_name + " (" + recording.name + ", seed " +
+                  std::to_string(truth.seed) + ")";
     if (result.end != RolloutEnd::kCompleted) {
       meta.notes = std::string(to_string(result.end)) + " at " + std::to_string(result.end_time_s) +
                    " s: " + result.end_detail;
@@ -77,6 +81,8 @@ CommandRunner add_record_command(CLI::App& app) {
   sub->add_option("truth", args->truth, "truth YAML (parameters, recordings)")->required();
   sub->add_option("--out", args->out, "output folder")->required();
   sub->add_option("--truth-out", args->truth_out, "folder of the truth files (default OUT/truth)");
+  sub->add_flag("--blind", args->blind,
+                "the logs' sidecars do not name the truth file (data with an undeclared effect)");
   return [args] { return run(*args); };
 }
 

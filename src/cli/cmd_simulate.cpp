@@ -19,6 +19,7 @@
 #include "motoflex/scenario/scenario.hpp"
 #include "motoflex/scenario/truth_file.hpp"
 #include "motoflex/sim/rollout_log.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -26,6 +27,7 @@ namespace {
 struct SimulateArgs {
   std::string scenario;
   std::string params;
+  bool allow_out_of_bounds = false;
   std::string motion;
   std::string recording;
   std::string out;
@@ -47,6 +49,7 @@ double rms_tracking_deg(const RolloutResult& r) {
 int run(const SimulateArgs& args) {
   ScenarioOverrides overrides;
   if (!args.params.empty()) overrides.parameters_json = args.params;
+  overrides.allow_out_of_bounds = args.allow_out_of_bounds;
   if (!args.motion.empty()) overrides.motion_log = args.motion;
   if (!args.solver.empty()) {
     overrides.solver = parse_step_solver(args.solver);
@@ -61,9 +64,16 @@ int run(const SimulateArgs& args) {
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.end == RolloutEnd::kModelError) {
-    std::fprintf(stderr, "motoflex: cannot simulate %s: %s\n", args.scenario.c_str(),
-                 result.end_detail.c_str());
-    return 1;
+    // The parameters are the input's: R = 0, a negative backlash, an unstable gear sub-step.
+    throw InputError(args.params.empty() ? args.scenario : args.params, 0, "parameters",
+                     "cannot simulate: " + result.end_detail);
+  }
+  if (result.frames_completed < 2) {
+    // No log to write: say why the rollout ended at once, not that a log needs 2 frames.
+    throw InputError(args.scenario, 0, "rollout",
+                     std::string("ended at its first frame (t = ") +
+                         std::to_string(result.end_time_s) + " s): " + to_string(result.end) +
+                         (result.end_detail.empty() ? "" : ": " + result.end_detail));
   }
 
   if (result.frames_completed < 2) {
@@ -111,6 +121,8 @@ CommandRunner add_simulate_command(CLI::App& app) {
   sub->add_option("scenario", args->scenario, "scenario YAML, or a truth YAML (as for record)")
       ->required();
   sub->add_option("--params", args->params, "parameter set JSON (name -> value)");
+  sub->add_flag("--allow-out-of-bounds", args->allow_out_of_bounds,
+                "accept --params values outside the parameters' bounds (a warning each)");
   sub->add_option("--motion", args->motion,
                   "replay the .cmd columns of this log (or a 2011 MoToFlex command file) instead");
   sub->add_option("--recording", args->recording,
@@ -120,7 +132,8 @@ CommandRunner add_simulate_command(CLI::App& app) {
   sub->add_option("--plot", args->plot, "also draw commanded vs simulated angles into this PNG");
   sub->add_option("--solver", args->solver,
                   "step (exact, reproducible) or quick (faster; not reproducible in threads)");
-  sub->add_option("--duration", args->duration_s, "simulate only the first S seconds");
+  sub->add_option("--duration", args->duration_s, "simulate only the first S seconds")
+      ->check(positive_seconds());
   return [args] { return run(*args); };
 }
 

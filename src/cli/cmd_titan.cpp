@@ -13,6 +13,7 @@
 #include "motoflex/studies/titan/titan_paper_study.hpp"
 #include "motoflex/studies/titan/titan_study_config.hpp"
 #include "motoflex/studies/titan/titan_study_report.hpp"
+#include "option_checks.hpp"
 
 namespace motoflex::cli {
 namespace {
@@ -77,7 +78,8 @@ CommandRunner add_titan_command(CLI::App& app) {
   sub->add_option("--out", args->out, "output folder (titan.json, report.md, CSV, PNG)")
       ->required();
   sub->add_option("--threads", args->threads,
-                  "threads for the study's rollouts (the timing run always uses one)");
+                  "threads for the study's rollouts (the timing run always uses one)")
+      ->check(thread_count());
   sub->add_flag("--no-plots", args->no_plots, "skip the PNG figures");
   return [args] { return run(*args); };
 }

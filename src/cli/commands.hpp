@@ -20,6 +20,8 @@ CommandRunner add_titan_command(CLI::App& app);
 CommandRunner add_export_command(CLI::App& app);
 CommandRunner add_residuals_command(CLI::App& app);
 CommandRunner add_loop_command(CLI::App& app);
+CommandRunner add_init_robot_command(CLI::App& app);
+CommandRunner add_check_robot_command(CLI::App& app);
 CommandRunner add_report_command(CLI::App& app);
 
 }  // namespace motoflex::cli

@@ -1,4 +1,5 @@
 #include "fit_console.hpp"
+#include "motoflex/core/error.hpp"
 
 #include <atomic>
 #include <csignal>
@@ -45,13 +46,19 @@ int run_fit_on_console(FitConfig config, bool resume, motoflex_es::Evaluator* ev
   if (summary.stop_reason == "interrupted") {
     std::printf("interrupted: checkpoint written; continue with `motoflex resume %s`\n",
                 dir.c_str());
+    return exit_code::kInterrupted;
   } else {
     std::printf("done (%s): best fitness %.6g after %llu evaluations; see %s/summary.json\n",
                 summary.stop_reason.c_str(), summary.best_fitness,
                 static_cast<unsigned long long>(summary.evaluations), dir.c_str());
     std::printf("%s\n", summary.convergence.c_str());
   }
-  return 0;
+  if (summary.invalid_candidates > 0) {
+    std::printf("%llu invalid candidate(s) scored worst (the model rejected them), e.g. %s\n",
+                static_cast<unsigned long long>(summary.invalid_candidates),
+                summary.invalid_reasons.empty() ? "?" : summary.invalid_reasons.front().c_str());
+  }
+  return exit_code::kOk;
 }
 
 }  // namespace motoflex::cli

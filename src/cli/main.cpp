@@ -1,5 +1,6 @@
 // motoflex: one binary, `motoflex <command>`. Bad input prints one line
-// "motoflex: <file>:<line>: <field>: <message>" and exits with code 2.
+// "motoflex: <file>:<line>: <field>: <message>" and exits with code 2; exit codes are those of
+// motoflex::exit_code (README, "Exit codes").
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -29,24 +30,36 @@ int main(int argc, char** argv) {
   runners["export"] = motoflex::cli::add_export_command(app);
   runners["residuals"] = motoflex::cli::add_residuals_command(app);
   runners["loop"] = motoflex::cli::add_loop_command(app);
+  runners["init-robot"] = motoflex::cli::add_init_robot_command(app);
+  runners["check-robot"] = motoflex::cli::add_check_robot_command(app);
   runners["report"] = motoflex::cli::add_report_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    const int code = app.exit(error);
-    return code == 0 ? 0 : 2;
+    if (error.get_exit_code() == 0) return app.exit(error);  // --help, --version
+    // One line, as every other error: "motoflex: --threads: Value 0 not in range ...".
+    std::string text = error.what();
+    for (char& c : text) c = c == '\n' ? ' ' : c;
+    std::fprintf(stderr, "motoflex: %s (see motoflex --help)\n", text.c_str());
+    return motoflex::exit_code::kBadInput;
   }
   try {
     for (const auto* sub : app.get_subcommands()) return runners.at(sub->get_name())();
   } catch (const motoflex::InputErrors& errors) {
     for (const auto& error : errors.errors()) std::fprintf(stderr, "motoflex: %s\n", error.what());
-    return 2;
+    return motoflex::exit_code::kBadInput;
+  } catch (const motoflex::IoError& error) {
+    std::fprintf(stderr, "motoflex: %s\n", error.what());
+    return motoflex::exit_code::kIo;
   } catch (const motoflex::InputError& error) {
     std::fprintf(stderr, "motoflex: %s\n", error.what());
-    return 2;
+    return motoflex::exit_code::kBadInput;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "motoflex: out of memory (an input too large for this machine?)\n");
+    return motoflex::exit_code::kIo;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "motoflex: error: %s\n", error.what());
-    return 1;
+    return motoflex::exit_code::kInternal;
   }
-  return 0;
+  return motoflex::exit_code::kOk;
 }

@@ -118,7 +118,13 @@ void AtomicFileWriter::commit() {
 
 void AtomicFileWriter::fail(const std::string& reason, int error_number) {
   discard();
-  throw InputError(path_, 0, "", reason + ": " + std::strerror(error_number));
+  const std::string message = reason + ": " + std::strerror(error_number);
+  // A path that names no folder (or a folder) is the user's input; anything else (a full
+  // disk, a read-only file system, no permission) is the machine's.
+  if (error_number == ENOENT || error_number == ENOTDIR || error_number == EISDIR) {
+    throw InputError(path_, 0, "", message);
+  }
+  throw IoError(path_, 0, "", message);
 }
 
 void AtomicFileWriter::discard() noexcept {

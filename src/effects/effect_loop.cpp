@@ -8,6 +8,8 @@
 #include <set>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/core/folder_lock.hpp"
+#include "motoflex/effects/convergence_guard.hpp"
 #include "motoflex/effects/loop_report.hpp"
 #include "motoflex/fit/effect_parameters.hpp"
 #include "motoflex/fit/fit_run.hpp"
@@ -101,6 +103,8 @@ void rank_iteration(const Evaluated& current, const LoopOptions& options, std::s
   step.ranking = rank_effects(current.fit.config, current.fit.best, options.effects,
                               current.fit.config.threads);
   step.ranking_seconds = seconds_since(ranking_start);
+  step.ranking.reliable = result.unreliable_reason.empty();
+  step.ranking.unreliable_reason = result.unreliable_reason;
   std::size_t probes = step.ranking.jacobian_rollouts;
   for (const auto& score : step.ranking.scores) probes += score.scored() ? 1 : 0;
   result.probe_rollouts += probes * current.fit.config.train->cases().size();
@@ -212,7 +216,7 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
 
 }  // namespace
 
-LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) {
+LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides, bool force) {
   const auto start = std::chrono::steady_clock::now();
   const FitConfig user = load_fit_config(fit_path, overrides);
   if (user.validation_logs.empty()) {
@@ -222,7 +226,7 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) 
   }
   const LoopOptions& options = user.loop;
   const fs::path out = user.out_dir;
-  fs::create_directories(out);
+  const FolderLock lock(out.string());  // one loop per folder; each fit locks its own sub-folder
   LoopResult result;
   result.out_dir = out.string();
 
@@ -232,6 +236,12 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides) 
   std::fflush(stdout);
   Evaluated current = evaluate(ensure_fit(load_fit_config(fit_path, base_overrides)));
   result.base_run_dir = current.fit.config.out_dir;
+  result.unreliable_reason =
+      check_converged_for_ranking(current.fit, result.base_run_dir, force, "motoflex loop");
+  if (!result.unreliable_reason.empty()) {
+    std::printf("loop: %s; going on (--force), every ranking marked unreliable\n",
+                result.unreliable_reason.c_str());
+  }
   result.base_model = modelled_effects(current.fit.config);
   std::vector<std::string> model = result.base_model;
   account(result, current.fit);

@@ -9,9 +9,9 @@
 #include <memory>
 #include <set>
 
+#include "motoflex/fit/effect_parameters.hpp"
 #include "motoflex/model/effect_library.hpp"
 #include "motoflex/sim/effect_hooks.hpp"
-#include "motoflex/fit/effect_parameters.hpp"
 
 namespace motoflex {
 namespace {
@@ -386,7 +386,8 @@ EffectRanking rank_effects(const FitConfig& config, const ParameterSet& current,
     for (const std::string& name : candidates) effects.push_back(&find_effect(name));
   }
   std::set<std::string> free_names;
-  for (const auto& p : config.free_parameters) free_names.insert(p.targets.begin(), p.targets.end());
+  for (const auto& p : config.free_parameters)
+    free_names.insert(p.targets.begin(), p.targets.end());
 
   EffectRanking ranking;
   const Residual residual = residual_of(train, current);

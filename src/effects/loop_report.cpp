@@ -68,8 +68,13 @@ nlohmann::ordered_json ranking_json(const EffectRanking& ranking) {
 }
 
 std::string ranking_markdown(const EffectRanking& ranking) {
+  const std::string warning =
+      ranking.reliable ? std::string()
+                       : "**UNRELIABLE ranking**: " + ranking.unreliable_reason +
+                             ". Resume the fit until it converges before trusting this order.\n\n";
   std::ostringstream md;
-  md << "| rank | effect | explained | ΔBIC | coefficients | signature |\n"
+  md << warning
+     << "| rank | effect | explained | ΔBIC | coefficients | signature |\n"
         "|---|---|---|---|---|---|\n";
   std::size_t rank = 0;
   for (const EffectScore& s : ranking.scores) {
@@ -112,6 +117,8 @@ void write_residual_report(const std::string& dir_text, const FitConfig& config,
     md << "\nValidation logs: overall RMS " << format("%.4f", validation.rms_deg) << " deg.\n\n"
        << joint_table(validation, nullptr);
   }
+  json["ranking_reliable"] = ranking.reliable;
+  if (!ranking.reliable) json["ranking_unreliable_because"] = ranking.unreliable_reason;
   json["ranking"] = ranking_json(ranking);
   json["samples"] = ranking.samples;
   json["effective_samples"] = ranking.effective_samples;
@@ -134,6 +141,7 @@ nlohmann::ordered_json iteration_json(const LoopIteration& it) {
       ranking.push_back({{"effect", s.effect}, {"score", s.explained}, {"delta_bic", s.delta_bic}});
   }
   item["ranking"] = ranking;
+  item["ranking_reliable"] = it.ranking.reliable;
   item["ranking_detail"] = ranking_json(it.ranking);
   item["added_effect"] = it.added_effect.empty() ? nlohmann::ordered_json(nullptr)
                                                  : nlohmann::ordered_json(it.added_effect);
@@ -180,6 +188,9 @@ nlohmann::ordered_json loop_json(const LoopResult& result, const FitConfig& user
     loop["iterations"].push_back(iteration_json(it));
   loop["final_model"] = result.final_model;
   loop["base_run_dir"] = result.base_run_dir;
+  loop["rankings_reliable"] = result.unreliable_reason.empty();
+  if (!result.unreliable_reason.empty())
+    loop["rankings_unreliable_because"] = result.unreliable_reason;
   loop["final_run_dir"] = result.final_run_dir;
   loop["evaluations"] = result.evaluations;
   loop["probe_rollouts"] = result.probe_rollouts;

@@ -1,5 +1,6 @@
 #include "motoflex/export/json_export.hpp"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "motoflex/core/build_info.hpp"
@@ -62,8 +63,23 @@ std::string export_json(const ExportInput& input) {
       {"config_hash", string_or_null(p.config_hash)},
       {"date", string_or_null(p.date)},
       {"motoflex_version", string_or_null(p.motoflex_version)},
+      {"run", string_or_null(p.run_dir)},
       {"exported_at", utc_now_iso8601()},
       {"exported_by", std::string("motoflex ") + version()}};
+  nlohmann::ordered_json data = nlohmann::ordered_json::array();
+  for (const auto& file : p.data) {
+    data.push_back({{"role", file.role}, {"path", file.path}, {"hash", file.hash}});
+  }
+  out["provenance"]["data"] = data;
+  nlohmann::ordered_json fitted = nlohmann::ordered_json::object();
+  for (const auto& f : p.fitted) {
+    fitted[f.name] = {{"value", f.value},
+                      {"ci95_lower", std::isfinite(f.lower) ? nlohmann::ordered_json(f.lower)
+                                                            : nlohmann::ordered_json(nullptr)},
+                      {"ci95_upper", std::isfinite(f.upper) ? nlohmann::ordered_json(f.upper)
+                                                            : nlohmann::ordered_json(nullptr)}};
+  }
+  out["provenance"]["fitted"] = fitted;
   return out.dump(2) + "\n";
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "exported_bodies.hpp"
+#include "exported_shapes.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/export/actuator_export.hpp"
 #include "xml_writer.hpp"
@@ -35,7 +36,8 @@ struct Writer {
   void add_joint(XmlElement& body, const std::string& name, const Eigen::Vector3d& pos,
                  const Eigen::Vector3d& axis, int actuator) const {
     XmlElement& joint = body.child("joint");
-    joint.attribute("name", name).attribute("type", "hinge");
+    const bool slide = actuator >= 0 && input.model.actuators[actuator].prismatic;
+    joint.attribute("name", name).attribute("type", slide ? "slide" : "hinge");
     joint.attribute("pos", format_vector(pos)).attribute("axis", format_vector(axis));
     if (actuator < 0) {
       joint.attribute("limited", "false");
@@ -63,16 +65,19 @@ struct Writer {
   }
 
   void add_geoms(XmlElement& element, const ExportedBody& body) const {
-    for (std::size_t k = 0; k < body.spec->boxes.size(); ++k) {
-      const BoxGeom& box = body.spec->boxes[k];
+    for (std::size_t k = 0; k < body.spec->collisions.size(); ++k) {
+      const CollisionShape& shape = body.spec->collisions[k];
       XmlElement& geom = element.child("geom");
-      geom.attribute("name", box.link + "_box" + std::to_string(k)).attribute("type", "box");
-      geom.attribute("size", format_vector(0.5 * box.size_m));
-      geom.attribute("pos", format_vector(box.X_BG.translation()));
-      geom.attribute("quat", detail::format_quaternion_wxyz(box.X_BG.linear()));
-      // Only feet touch the ground (floor: contype 0, conaffinity 1); nothing else collides.
-      geom.attribute("contype", box.is_foot ? "1" : "0").attribute("conaffinity", "0");
-      if (box.is_foot) {
+      const std::string name = detail::shape_geom_name(shape, k);
+      geom.attribute("name", name);
+      detail::set_mjcf_geom(geom, shape, "mesh_" + name);
+      geom.attribute("pos", format_vector(shape.X_BG.translation()));
+      geom.attribute("quat", detail::format_quaternion_wxyz(shape.X_BG.linear()));
+      // Only feet and contact links touch the ground (floor: contype 0, conaffinity 1);
+      // nothing else collides.
+      const bool touches = shape.contact != GroundContact::kFall;
+      geom.attribute("contype", touches ? "1" : "0").attribute("conaffinity", "0");
+      if (touches) {
         // MuJoCo mixes the two geoms' contact parameters: give both the same.
         geom.attribute("friction", format_numbers({input.parameters.get("contact.mu"), 0.0, 0.0}))
             .attribute("solref", contact_solref)
@@ -167,6 +172,7 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
                  ". Lost in MJCF: backlash, gear spring and mass, PID integral, motor "
                  "inductance, Stribeck/load friction, contact slip, sensor effects (see the JSON "
                  "export).");
+  mujoco.comment(provenance_comment(input.provenance, input.servo));
   mujoco.child("compiler").attribute("angle", "radian").attribute("inertiafromgeom", "false");
   mujoco.child("option")
       .attribute("timestep", input.dt_s)
@@ -174,10 +180,27 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
       .attribute("integrator", "implicit")
       .attribute("cone", "pyramidal");
 
+  // Mesh collisions as inline assets (MuJoCo collides their convex hulls, as motoflex does).
+  bool has_meshes = false;
+  for (const auto& body : model.bodies) {
+    for (const auto& shape : body.collisions) has_meshes |= shape.kind == ShapeKind::kMesh;
+  }
+  if (has_meshes) {
+    XmlElement& asset = mujoco.child("asset");
+    for (const auto& body : model.bodies) {
+      for (std::size_t k = 0; k < body.collisions.size(); ++k) {
+        const CollisionShape& shape = body.collisions[k];
+        if (shape.kind != ShapeKind::kMesh) continue;
+        detail::add_mjcf_mesh_asset(asset, shape, "mesh_" + detail::shape_geom_name(shape, k));
+      }
+    }
+  }
   XmlElement& world = mujoco.child("worldbody");
   std::size_t foot_boxes = 0;
   for (const auto& body : model.bodies) {
-    for (const auto& box : body.boxes) foot_boxes += box.is_foot ? 1 : 0;
+    for (const auto& shape : body.collisions) {
+      foot_boxes += shape.contact != GroundContact::kFall ? 1 : 0;
+    }
   }
   if (foot_boxes > 0) {
     const auto [timeconst, dampratio] = contact_solref(input, foot_boxes);
@@ -194,6 +217,25 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
   }
   w.add_body(world, model.root_body, Eigen::Vector3d::Zero());
 
+  // URDF <mimic>: the follower's position is multiplier·leader + offset.
+  bool has_mimic = false;
+  for (const JointSpec& joint : model.joints) has_mimic |= joint.mimic.has_value();
+  if (has_mimic) {
+    XmlElement& equality = mujoco.child("equality");
+    for (const JointSpec& joint : model.joints) {
+      if (!joint.mimic) continue;
+      const JointSpec& leader = model.joints[joint.mimic->leader_joint];
+      const int leader_actuator =
+          joint.mimic->leader_axis == 1 ? leader.actuator1 : leader.actuator2;
+      equality.child("joint")
+          .attribute("joint1", joint.name)
+          .attribute("joint2", w.actuator_or(leader_actuator, joint.mimic->leader_axis == 1
+                                                                  ? leader.name
+                                                                  : leader.name + "_2"))
+          .attribute("polycoef",
+                     format_numbers({joint.mimic->offset, joint.mimic->multiplier, 0.0, 0.0, 0.0}));
+    }
+  }
   XmlElement& actuator = mujoco.child("actuator");
   bool next_angle = false;
   for (const ActuatorExport& a : w.actuators) {

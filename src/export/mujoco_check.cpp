@@ -126,6 +126,7 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
   out.steps = ode_steps;
   out.motoflex_end = to_string(rollout.end());
   out.mujoco_version = mj_versionString();
+  out.geoms = static_cast<std::size_t>(m->ngeom);
   out.rms_deg_per_joint.assign(n, 0.0);
   constexpr double kDeg = 180.0 / M_PI;
   double total = 0.0;

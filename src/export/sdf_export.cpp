@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "exported_bodies.hpp"
+#include "exported_shapes.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/export/actuator_export.hpp"
 #include "motoflex/export/servo_export.hpp"
@@ -86,15 +87,17 @@ void add_link(XmlElement& model, const ExportedBody& body, const ParameterSet& p
   inertia.text_child("iyy", I(1, 1));
   inertia.text_child("iyz", I(1, 2));
   inertia.text_child("izz", I(2, 2));
-  for (std::size_t k = 0; k < body.spec->boxes.size(); ++k) {
-    const BoxGeom& box = body.spec->boxes[k];
-    const std::string name = box.link + "_box" + std::to_string(k);
+  for (std::size_t k = 0; k < body.spec->collisions.size(); ++k) {
+    const CollisionShape& shape = body.spec->collisions[k];
+    const std::string name = detail::shape_geom_name(shape, k);
     for (const char* kind : {"collision", "visual"}) {
       XmlElement& geom = link.child(kind);
       geom.attribute("name", name);
-      geom.text_child("pose", pose_text(box.X_BG.translation(), box.X_BG.linear()));
-      geom.child("geometry").child("box").text_child("size", format_vector(box.size_m));
-      if (box.is_foot && std::string(kind) == "collision") add_surface(geom, p);
+      geom.text_child("pose", pose_text(shape.X_BG.translation(), shape.X_BG.linear()));
+      detail::add_sdf_geometry(geom, shape);
+      if (shape.contact != GroundContact::kFall && std::string(kind) == "collision") {
+        add_surface(geom, p);
+      }
     }
   }
 }
@@ -155,8 +158,11 @@ void add_joint(XmlElement& model, const ExportInput& input, const JointSpec& spe
                const Eigen::Vector3d& offset_m) {
   const RobotModel& robot = input.model;
   XmlElement& joint = model.child("joint");
-  const bool two_axes = spec.kind != JointKind::kHinge;
-  joint.attribute("name", spec.name).attribute("type", two_axes ? "universal" : "revolute");
+  const bool two_axes = spec.kind == JointKind::kUniversal || spec.kind == JointKind::kFlex;
+  joint.attribute("name", spec.name)
+      .attribute("type", two_axes                          ? "universal"
+                         : spec.kind == JointKind::kSlider ? "prismatic"
+                                                           : "revolute");
   joint.text_child("parent", robot.bodies[spec.parent_body].name);
   joint.text_child("child", robot.bodies[spec.child_body].name);
   joint.text_child("pose", pose_text(spec.anchor_W0_m + offset_m, Eigen::Matrix3d::Identity()))
@@ -203,13 +209,16 @@ std::string export_sdf(const ExportInput& input) {
               ". Joint dynamics and limits are the fitted joint-level values; <motoflex:servo> "
               "(ignored by simulators) holds the linearised servo gains and the armature, which "
               "SDF cannot express.");
+  sdf.comment(provenance_comment(input.provenance, input.servo));
   XmlElement& world = sdf.child("world");
   world.attribute("name", "motoflex_" + robot.name);
   world.text_child("gravity", "0 0 -9.81");
   add_physics(world, input);
   bool has_feet = false;
   for (const auto& body : robot.bodies) {
-    for (const auto& box : body.boxes) has_feet = has_feet || box.is_foot;
+    for (const auto& shape : body.collisions) {
+      has_feet = has_feet || shape.contact != GroundContact::kFall;
+    }
   }
   if (has_feet) add_ground(world, input);
 

@@ -38,6 +38,23 @@ void set(TiXmlElement* e, const char* name, double value) {
   e->SetAttribute(name, format_number(value).c_str());
 }
 
+// Removes the file's own <transmission> elements of the actuated joints (URDFs from ROS
+// packages often carry them), so that each joint has exactly the one add_transmission writes.
+void remove_transmissions(TiXmlElement* robot, const std::vector<ActuatorExport>& actuators) {
+  TiXmlElement* element = robot->FirstChildElement("transmission");
+  while (element != nullptr) {
+    TiXmlElement* next = element->NextSiblingElement("transmission");
+    bool actuated = false;
+    for (TiXmlElement* joint = element->FirstChildElement("joint"); joint != nullptr;
+         joint = joint->NextSiblingElement("joint")) {
+      const char* name = joint->Attribute("name");
+      for (const ActuatorExport& a : actuators) actuated = actuated || (name && a.joint == name);
+    }
+    if (actuated) robot->RemoveChild(element);
+    element = next;
+  }
+}
+
 void add_transmission(TiXmlElement* robot, const ActuatorExport& a) {
   TiXmlElement transmission("transmission");
   transmission.SetAttribute("name", (a.joint + "_transmission").c_str());
@@ -120,7 +137,10 @@ std::string export_urdf(const ExportInput& input) {
       "): fitted <dynamics> and <limit effort velocity> on the actuated joints, one "
       "<transmission> each; <motoflex:model> at the end carries every fitted parameter that "
       "URDF has no element for. ";
-  robot->InsertBeforeChild(robot->FirstChild(), TiXmlComment(note.c_str()));
+  TiXmlNode* first = robot->InsertBeforeChild(robot->FirstChild(), TiXmlComment(note.c_str()));
+  robot->InsertAfterChild(first,
+                          TiXmlComment(provenance_comment(input.provenance, input.servo).c_str()));
+  remove_transmissions(robot, actuators);
   for (const ActuatorExport& a : actuators) add_transmission(robot, a);
   add_model_extension(robot, input, actuators);
 

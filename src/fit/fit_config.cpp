@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <sstream>
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/core/error_collector.hpp"
@@ -49,6 +50,12 @@ std::shared_ptr<const Scenario> load_fit_scenario(const FitSpec& spec,
   return scenario;
 }
 
+std::string number_text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
 ParameterSet apply_fixed(const FitSpec& spec, ParameterSet base) {
   ErrorCollector errors;
   for (std::size_t i = 0; i < spec.fixed.size(); ++i) {
@@ -60,11 +67,31 @@ ParameterSet apply_fixed(const FitSpec& spec, ParameterSet base) {
             where_of(spec.fixed_where, i, spec.root),
             "unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
       }
+      const ParameterDomain& domain = base.registry().domain(*base.registry().find(name));
+      if (!domain.contains(value)) {
+        throw error_at(where_of(spec.fixed_where, i, spec.root), name + " = " + number_text(value) +
+                                                                     " is outside its domain (" +
+                                                                     domain.describe() + ")");
+      }
       base.set(name, value);
     });
   }
   errors.throw_if_any();
   return base;
+}
+
+// Every value the search may propose must be one the model accepts: bounds inside the
+// domain of every target (an integer parameter's interval is rounded by the model).
+void check_free_domain(const FreeParameterSpec& spec, const ParameterRegistry& registry,
+                       const std::vector<std::string>& targets, const FreeParameter& p) {
+  for (const auto& target : targets) {
+    const ParameterDomain& domain = registry.domain(*registry.find(target));
+    if (!domain.contains_interval(p.lower, p.upper)) {
+      throw error_at(spec.where, "bounds [" + number_text(p.lower) + ", " + number_text(p.upper) +
+                                     "] leave the domain of " + target + " (" + domain.describe() +
+                                     ")");
+    }
+  }
 }
 
 // One `free:` entry expanded against the robot's parameters: a tie, or one per match (each).
@@ -89,6 +116,7 @@ std::vector<FreeParameter> expand_free(const FreeParameterSpec& spec, const Para
     throw error_at(spec.where, "start " + std::to_string(*spec.start) + " lies outside [" +
                                    std::to_string(p.lower) + ", " + std::to_string(p.upper) + "]");
   }
+  check_free_domain(spec, registry, targets, p);
   std::vector<std::vector<std::string>> groups;
   if (spec.each) {
     for (const auto& t : targets) groups.push_back({t});
@@ -174,6 +202,12 @@ FitnessOptions fitness_options(const FitSpec& spec, const RobotModel& model) {
         throw error_at(where, "'" + joint + "' is not an actuated joint");
       }
       fitness.joint_weights[*index] = weight;
+    }
+    const bool all_zero = std::all_of(fitness.joint_weights.begin(), fitness.joint_weights.end(),
+                                      [](double w) { return w == 0.0; });
+    if (all_zero && !(fitness.imu_weight > 0.0)) {
+      throw error_at(spec.joint_weights_where,
+                     "every weight is 0 (and imu_weight too): every fitness would be 0");
     }
   }
   return fitness;

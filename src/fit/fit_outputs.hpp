@@ -25,6 +25,9 @@ struct RunResult {
   bool converged = false;
   std::string convergence;
   double seconds = 0.0;
+  // Per free coordinate: relative fitness change per bound-width (fit_sensitivity.hpp); empty
+  // when not measured (an interrupted run).
+  std::vector<double> sensitivity;
 };
 
 // Writes the outputs of a run into config.out_dir and returns its summary.

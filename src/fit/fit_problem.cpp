@@ -42,21 +42,45 @@ motoflex_es::Bounds FitProblem::bounds() const {
   return {config_.space->lower(), config_.space->upper()};
 }
 
-void FitProblem::set_counters(std::uint64_t stopped, std::uint64_t simulated, std::uint64_t saved) {
+void FitProblem::set_counters(std::uint64_t stopped, std::uint64_t simulated, std::uint64_t saved,
+                              std::uint64_t invalid, const std::vector<std::string>& reasons) {
   stopped_early_ = stopped;
   frames_simulated_ = simulated;
   frames_saved_ = saved;
+  invalid_candidates_ = invalid;
+  const std::lock_guard<std::mutex> lock(reasons_mutex_);
+  invalid_reasons_.clear();
+  for (const auto& reason : reasons) {
+    if (invalid_reasons_.size() < kMaxInvalidReasons) invalid_reasons_.insert(reason);
+  }
+}
+
+std::vector<std::string> FitProblem::invalid_reasons() const {
+  const std::lock_guard<std::mutex> lock(reasons_mutex_);
+  return {invalid_reasons_.begin(), invalid_reasons_.end()};
+}
+
+void FitProblem::note_invalid(const std::string& reason) {
+  std::atomic_ref<std::uint64_t>(invalid_candidates_).fetch_add(1);
+  const std::lock_guard<std::mutex> lock(reasons_mutex_);
+  invalid_reasons_.insert(reason);
+  // Keep the first reasons in sorted order: the same set for any evaluation order.
+  while (invalid_reasons_.size() > kMaxInvalidReasons)
+    invalid_reasons_.erase(--invalid_reasons_.end());
 }
 
 std::vector<std::uint64_t> FitProblem::counters() const {
-  return {stopped_early_, frames_simulated_, frames_saved_};
+  return {stopped_early_, frames_simulated_, frames_saved_, invalid_candidates_};
 }
 
 void FitProblem::add_counters(const std::vector<std::uint64_t>& increments) {
-  if (increments.size() != 3) throw std::invalid_argument("FitProblem: 3 counters expected");
+  if (increments.size() != 3 && increments.size() != 4) {
+    throw std::invalid_argument("FitProblem: 3 or 4 counters expected");
+  }
   stopped_early_ += increments[0];
   frames_simulated_ += increments[1];
   frames_saved_ += increments[2];
+  if (increments.size() == 4) invalid_candidates_ += increments[3];
 }
 
 void FitProblem::evaluate_batch(const std::vector<std::vector<double>>& xs,
@@ -66,9 +90,25 @@ void FitProblem::evaluate_batch(const std::vector<std::vector<double>>& xs,
   for (std::size_t k = 0; k < xs.size(); ++k) {
     const double threshold = config_.early_termination ? context.stop_threshold
                                                        : std::numeric_limits<double>::infinity();
-    const FitnessBreakdown result = config_.train->evaluate(config_.space->apply(xs[k]), threshold,
-                                                            nullptr, context.spare_threads);
+    FitnessBreakdown result;
+    try {
+      result = config_.train->evaluate(config_.space->apply(xs[k]), threshold, nullptr,
+                                       context.spare_threads);
+    } catch (const std::bad_alloc&) {
+      throw;  // the machine, not the candidate
+    } catch (const std::exception& error) {
+      // A candidate the model rejects is the worst score, never the end of the fit.
+      fitness[k] = std::numeric_limits<double>::infinity();
+      note_invalid(error.what());
+      continue;
+    }
     fitness[k] = result.fitness;
+    for (const auto& c : result.cases) {
+      if (c.end == RolloutEnd::kModelError) {
+        note_invalid(c.end_detail);
+        break;
+      }
+    }
     std::uint64_t simulated = 0, requested = 0;
     for (const auto& c : result.cases) simulated += c.frames;
     for (const auto& c : config_.train->cases()) requested += c.commands.frames();

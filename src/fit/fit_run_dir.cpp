@@ -1,6 +1,10 @@
 #include "fit_run_dir.hpp"
 
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -28,9 +32,18 @@ void truncate_generations_csv(const fs::path& path, std::uint64_t generation) {
   std::ifstream in(path);
   std::string line, kept = kCsvHeader;
   std::getline(in, line);  // header
+  int number = 1;
   while (std::getline(in, line)) {
+    ++number;
     if (line.empty()) continue;
-    if (std::stoull(line.substr(0, line.find(','))) <= generation) kept += line + "\n";
+    std::uint64_t row_generation = 0;
+    const std::size_t comma = std::min(line.find(','), line.size());
+    const auto [end, ec] = std::from_chars(line.data(), line.data() + comma, row_generation);
+    if (ec != std::errc() || end != line.data() + comma) {
+      throw InputError(path.string(), number, "generation",
+                       "not a generation number: '" + line.substr(0, comma) + "'");
+    }
+    if (row_generation <= generation) kept += line + "\n";
   }
   write_file_atomically(path.string(), kept);
 }
@@ -39,33 +52,62 @@ void truncate_generations_csv(const fs::path& path, std::uint64_t generation) {
 
 RunDir::RunDir(const FitConfig& config) : config_(config), dir_(config.out_dir) {}
 
+void RunDir::take_lock() {
+  lock_ = std::make_unique<FolderLock>(dir_);  // creates the folder
+  if (const int removed = remove_stale_temp_files(dir_)) {
+    std::fprintf(stderr, "motoflex: %s: removed %d temporary file(s) of an interrupted run\n",
+                 dir_.c_str(), removed);
+  }
+}
+
 RunDirState RunDir::start() {
   const fs::path dir = dir_;
+  // The lock first: a second writer learns the running one's PID whatever the folder holds.
+  take_lock();
   if (fs::exists(dir / "checkpoint.json")) {
     throw InputError(dir.string(), 0, "out",
                      "already holds a fit; continue it with `motoflex resume " + dir.string() +
                          "` or choose another --out");
   }
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error) throw InputError(dir.string(), 0, "out", "cannot create: " + error.message());
   write_file_atomically((dir / "generations.csv").string(), kCsvHeader);
   return {};
 }
 
 RunDirState RunDir::resume(motoflex_es::Strategy& strategy, FitProblem& problem) {
+  take_lock();
   const fs::path checkpoint_path = fs::path(dir_) / "checkpoint.json";
+  if (fs::is_directory(checkpoint_path)) {
+    throw InputError(checkpoint_path.string(), 0, "", "is a folder, not a checkpoint file");
+  }
+  if (!fs::exists(checkpoint_path)) {
+    throw InputError(dir_, 0, "checkpoint.json",
+                     "missing: the fit stopped before its first checkpoint; start it again with "
+                     "`motoflex fit " +
+                         config_.path + " --out " + dir_ + "`");
+  }
+  if (!fs::exists(fs::path(dir_) / "generations.csv")) {
+    std::fprintf(stderr,
+                 "motoflex: %s: generations.csv: missing; the generations before the checkpoint "
+                 "are not in the new one\n",
+                 dir_.c_str());
+  }
   motoflex_es::Checkpoint checkpoint;
   try {
     checkpoint = motoflex_es::read_checkpoint(checkpoint_path.string(), config_.hash);
     strategy.load_state(checkpoint.strategy_state);
   } catch (const motoflex_es::CheckpointError& error) {
-    throw InputError(checkpoint_path.string(), 0, "", error.what());
+    // The es library's message starts with the path already; print it once.
+    std::string message = error.what();
+    const std::string prefix = checkpoint_path.string() + ": ";
+    if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+    throw InputError(checkpoint_path.string(), 0, "", message);
   }
   const auto& extra = checkpoint.extra;
   problem.set_counters(extra.value("stopped_early", std::uint64_t{0}),
                        extra.value("frames_simulated", std::uint64_t{0}),
-                       extra.value("frames_saved", std::uint64_t{0}));
+                       extra.value("frames_saved", std::uint64_t{0}),
+                       extra.value("invalid_candidates", std::uint64_t{0}),
+                       extra.value("invalid_reasons", std::vector<std::string>{}));
   RunDirState state;
   state.seconds_before = extra.value("seconds", 0.0);
   state.main_done = extra.value("main_done", false);
@@ -93,6 +135,11 @@ void RunDir::append_generation(const motoflex_es::GenerationReport& report, doub
   csv << report.generation << ',' << report.evaluations << ',' << format_double(report.best_fitness)
       << ',' << format_double(report.batch_median) << ',' << format_double(sigma) << ','
       << format_double(seconds) << '\n';
+  csv.flush();
+  if (!csv) {
+    throw IoError((fs::path(dir_) / "generations.csv").string(), 0, "",
+                  std::string("cannot append a row: ") + std::strerror(errno));
+  }
 }
 
 void RunDir::write_checkpoint(const motoflex_es::Strategy& strategy, const FitProblem& problem,
@@ -103,6 +150,8 @@ void RunDir::write_checkpoint(const motoflex_es::Strategy& strategy, const FitPr
   checkpoint.extra = {{"stopped_early", problem.stopped_early()},
                       {"frames_simulated", problem.frames_simulated()},
                       {"frames_saved", problem.frames_saved()},
+                      {"invalid_candidates", problem.invalid_candidates()},
+                      {"invalid_reasons", problem.invalid_reasons()},
                       {"seconds", seconds},
                       {"main_done", state.main_done}};
   if (state.main_done) {

@@ -4,8 +4,10 @@
 // checkpoint.json (atomic, versioned by the es library) the full state after it, run.json what
 // `resume` needs to rebuild the config.
 
+#include <memory>
 #include <string>
 
+#include "motoflex/core/folder_lock.hpp"
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/fit_problem.hpp"
 #include "motoflex_es/driver.hpp"
@@ -24,10 +26,12 @@ struct RunDirState {
 class RunDir {
  public:
   explicit RunDir(const FitConfig& config);
-  // A new run: refuses a folder that holds a fit, creates it and generations.csv.
+  // A new run: takes the folder's lock (FolderLock), refuses a folder that holds a fit,
+  // removes temporary files a killed run left, creates generations.csv.
   RunDirState start();
-  // Loads the checkpoint into `strategy` and `problem`'s counters; drops generations.csv rows
-  // the checkpoint does not have (a kill between the row and the checkpoint).
+  // Takes the folder's lock, removes stale temporary files, loads the checkpoint into `strategy`
+  // and `problem`'s counters; drops generations.csv rows the checkpoint does not have (a kill
+  // between the row and the checkpoint).
   RunDirState resume(motoflex_es::Strategy& strategy, FitProblem& problem);
   void write_run_json() const;
   void append_generation(const motoflex_es::GenerationReport& report, double mean_sigma,
@@ -38,6 +42,9 @@ class RunDir {
  private:
   const FitConfig& config_;
   std::string dir_;
+  std::unique_ptr<FolderLock> lock_;  // held from start()/resume() until the run ends
+
+  void take_lock();
 };
 
 // Mean step size relative to the bound widths (μ+λ: over the population; CMA-ES: σ; 0 else).

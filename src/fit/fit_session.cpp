@@ -7,7 +7,9 @@
 
 #include "fit_outputs.hpp"
 #include "fit_run_dir.hpp"
+#include "fit_sensitivity.hpp"
 #include "motoflex/core/error.hpp"
+#include "motoflex/fit/excitation_check.hpp"
 #include "motoflex/fit/fit_problem.hpp"
 #include "motoflex_es/checkpoint.hpp"
 #include "motoflex_es/driver.hpp"
@@ -248,6 +250,13 @@ FitSummary FitSession::run() {
   const RunClock clock(saved.seconds_before);
   const SessionHooks hooks{s.progress, [&s] { return s.should_stop(); }};
 
+  if (!s.resume) {
+    // Said before the first generation: a joint the logs leave still wastes the whole budget.
+    for (const std::string& warning :
+         excitation_warnings(config.train->model(), config.train->cases())) {
+      std::fprintf(stderr, "motoflex: warning: %s\n", warning.c_str());
+    }
+  }
   detail::RunResult result;
   result.strategy = strategy->name();
   result.evaluator = evaluator->name();
@@ -262,6 +271,9 @@ FitSummary FitSession::run() {
   result.best_x = strategy->best_x();
   if (!s.should_stop() && !config.strategy.polish.empty() && !result.best_x.empty()) {
     run_polish(config, *strategy, problem, clock.now(), hooks, result);
+  }
+  if (!s.should_stop() && !result.best_x.empty()) {
+    result.sensitivity = detail::fitness_sensitivity(problem, *evaluator, result.best_x);
   }
   result.generations = strategy->generation();
   result.evaluations = strategy->evaluations() + result.polish_evaluations;

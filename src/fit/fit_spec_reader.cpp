@@ -85,9 +85,15 @@ void read_fitness(const YamlValue& fitness, FitSpec& spec) {
   errors.check([&] { spec.early_termination = fitness.get_bool("early_termination", true); });
   errors.check([&] {
     spec.fitness_m = fitness.get_double("m", spec.fitness_m);
-    if (!(spec.fitness_m >= 0.0)) fitness.at("m").fail("must be >= 0");
+    // Beyond 10, T^m overflows for long logs and every fitness becomes 0 (MoToFlex uses 1-2).
+    if (!(spec.fitness_m >= 0.0 && spec.fitness_m <= 10.0)) {
+      fitness.at("m").fail("must be in [0, 10]");
+    }
   });
-  errors.check([&] { spec.fitness_settle_s = fitness.get_double("settle_s", 0.0); });
+  errors.check([&] {
+    spec.fitness_settle_s = fitness.get_double("settle_s", 0.0);
+    if (!(spec.fitness_settle_s >= 0.0)) fitness.at("settle_s").fail("must be >= 0");
+  });
   errors.check([&] {
     spec.imu_weight = fitness.get_double("imu_weight", 0.0);
     if (!(spec.imu_weight >= 0.0)) fitness.at("imu_weight").fail("must be >= 0");

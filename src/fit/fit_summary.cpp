@@ -49,13 +49,23 @@ std::string FitSummary::full_report() const {
   std::size_t width = 10;
   for (const auto& p : parameters) width = std::max(width, p.name.size());
   out += "\n  " + pad("parameter", width) +
-         "        start       fitted        lower        upper  in bounds\n";
+         "        start       fitted        lower        upper  in bounds  sensitivity\n";
   for (const auto& p : parameters) {
     const double fraction = p.bound_fraction();
     std::string flag = fraction < 0.01 || fraction > 0.99 ? "  at a bound" : "";
     out += "  " + pad(p.name, width) + format(" %12.5g", p.start) + format(" %12.5g", p.value) +
            format(" %12.5g", p.lower) + format(" %12.5g", p.upper) +
-           format("  %5.0f %%", 100.0 * fraction) + flag + " " + p.unit + "\n";
+           format("  %5.0f %%", 100.0 * fraction) +
+           (p.sensitivity >= 0.0 ? format("  %11.3g", p.sensitivity) : std::string()) + flag + " " +
+           p.unit + (p.undetermined() ? "  NOT DETERMINED by the data" : "") + "\n";
+  }
+  std::string undetermined;
+  for (const auto& p : parameters) {
+    if (p.undetermined()) undetermined += (undetermined.empty() ? "" : ", ") + p.name;
+  }
+  if (!undetermined.empty()) {
+    out += "  the training data cannot determine: " + undetermined +
+           " (a 1 % step in its range moves the fitness by < 0.1 %)\n";
   }
   if (details.contains("robots")) {
     out += "\n  training logs: fitness, frames simulated / requested, end, RMS (deg)\n";
@@ -72,6 +82,10 @@ std::string FitSummary::full_report() const {
     out += "\n  early termination: " + std::to_string(individuals_stopped_early) +
            " individuals stopped, " + std::to_string(frames_saved) + " of " +
            std::to_string(frames_simulated + frames_saved) + " frames saved\n";
+  }
+  if (invalid_candidates > 0) {
+    out += "\n  invalid candidates (scored worst): " + std::to_string(invalid_candidates) + "\n";
+    for (const auto& reason : invalid_reasons) out += "    " + reason + "\n";
   }
   return out;
 }

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -27,7 +28,16 @@ struct Column {
   std::string ours;            // our name for it, when the sidecar maps it to another
   double scale = 1.0;          // to s or rad
   bool check_degrees = false;  // an angle whose unit nobody declared
+  bool declared_rad = false;   // an angle the sidecar says is in rad
+  mutable bool warned_turns = false;  // the "more than two turns" warning was printed
 };
+
+// A joint, declared in rad, that turned more than two turns: the numbers may be degrees (a
+// degree log read as rad gave a fit 3511° RMS of error without a word), or a continuous joint
+// counting its turns. The declaration wins; the reader warns once per column.
+constexpr double kMaxDeclaredRad = 4.0 * std::numbers::pi;
+// Longest time a log may span: the fit simulates all of it (a row at 1e7 s would run for days).
+constexpr double kMaxLogSpanS = 3600.0;
 
 // What the header row says is in the file.
 struct Layout {
@@ -135,6 +145,7 @@ bool maps_time(const Sidecar* sidecar) {
 void angle_scale(AngleUnit unit, Column& column) {
   column.scale = unit == AngleUnit::kDeg ? std::numbers::pi / 180.0 : 1.0;
   column.check_degrees = unit == AngleUnit::kUndeclared;
+  column.declared_rad = unit == AngleUnit::kRad;
 }
 
 Layout parse_header(const std::vector<std::string_view>& names, const Sidecar* sidecar,
@@ -289,6 +300,13 @@ double parse_value(std::string_view text, const std::string& path, int line,
 // An angle beyond ±2π in a column whose unit nobody declared is almost surely in degrees.
 void check_not_degrees(double value, const Column& column, const std::string& path, int line,
                        const std::string& sidecar, bool has_sidecar) {
+  if (column.declared_rad && std::abs(value) > kMaxDeclaredRad && !column.warned_turns) {
+    column.warned_turns = true;
+    std::fprintf(stderr,
+                 "motoflex: warning: %s:%d: %s: angle %s rad is more than two turns: a continuous "
+                 "joint, or degrees although the sidecar %s declares rad?\n",
+                 path.c_str(), line, column.name.c_str(), shortest(value).c_str(), sidecar.c_str());
+  }
   if (!column.check_degrees || std::abs(value) <= 2.0 * std::numbers::pi) return;
   const std::string group = column.kind == ColumnKind::kCommanded  ? "cmd"
                             : column.kind == ColumnKind::kMeasured ? "meas"
@@ -300,6 +318,39 @@ void check_not_degrees(double value, const Column& column, const std::string& pa
                        sidecar + (has_sidecar ? "" : " (there is none yet)") +
                        ": `units: deg`, or `units: {" + group +
                        ": deg}` for this group (`units: rad` if these are radians)");
+}
+
+// The rows' time axis against the limits and the sidecar: a bounded span, and a row spacing
+// against the declared rate_hz. A factor of 100 or more is an error (times in ms read as s are
+// 1000x off); a smaller disagreement (a log thinned or resampled after its sidecar was written,
+// a nominal rate) is a warning, since the fit uses the rows' own times.
+void check_time_axis(JointLog& log, const std::optional<Sidecar>& sidecar,
+                     const std::string& csv_path, int last_line) {
+  const double span_s = log.time_s.back() - log.time_s.front();
+  if (span_s > kMaxLogSpanS) {
+    throw InputError(csv_path, last_line, "time_s",
+                     "the log spans " + shortest(span_s) + " s (at most " + shortest(kMaxLogSpanS) +
+                         " s): a time jump, or times in ms? (sidecar `units: {time: ms}`)");
+  }
+  if (!sidecar) return;
+  std::vector<double> steps(log.frames() - 1);
+  for (std::size_t i = 0; i + 1 < log.frames(); ++i) steps[i] = log.time_s[i + 1] - log.time_s[i];
+  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+  const double rows_hz = 1.0 / steps[steps.size() / 2];
+  const double ratio = rows_hz / sidecar->meta.rate_hz;
+  const std::string disagreement = shortest(sidecar->meta.rate_hz) + " Hz, but the rows of " +
+                                   csv_path + " are " + shortest(rows_hz) + " Hz apart (median)";
+  if (ratio < 0.01 || ratio > 100.0) {
+    throw InputError(
+        sidecar->path, sidecar->rate_line, "rate_hz",
+        disagreement +
+            // Times in ms read as s: rows 1000x further apart than declared.
+            (ratio > 0.0005 && ratio < 0.002 ? ": times in ms? (`units: {time: ms}`)" : ""));
+  }
+  if (ratio < 0.5 || ratio > 2.0) {
+    log.warnings.push_back(sidecar->path + ":" + std::to_string(sidecar->rate_line) +
+                           ": rate_hz: " + disagreement + " (the rows' times are used)");
+  }
 }
 
 }  // namespace
@@ -400,6 +451,7 @@ JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements&
         csv_path, lines.number(), "rows",
         "a joint log needs at least 2 data rows, found " + std::to_string(log.frames()));
   }
+  check_time_axis(log, sidecar, csv_path, lines.number());
   if (sidecar) log.meta = sidecar->meta;
   if (!layout.extras.empty()) {
     std::string list;

@@ -87,7 +87,9 @@ Sidecar read_joint_log_sidecar(const std::string& path) {
   if (meta.robot.empty()) robot.fail("must not be empty");
   const YamlValue rate = root.at("rate_hz");
   meta.rate_hz = rate.as_double();
+  sidecar.rate_line = rate.line();
   if (meta.rate_hz <= 0.0) rate.fail("must be positive");
+  if (meta.rate_hz > 1.0e6) rate.fail("must be at most 1 MHz");
   meta.motion = root.get_string("motion", "");
   if (const std::optional<YamlValue> units = root.find("units")) sidecar.units = read_units(*units);
   if (const std::optional<YamlValue> columns = root.find("columns")) {

@@ -32,6 +32,7 @@ struct ColumnMapping {
 
 struct Sidecar {
   std::string path;
+  int rate_line = 0;  // line of rate_hz (errors about the rate point at it)
   JointLogMeta meta;  // meta.units stays "rad": the log in memory is always rad and s
   ColumnUnits units;
   std::vector<ColumnMapping> columns;  // in sidecar order; empty = the header uses our names

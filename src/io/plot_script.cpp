@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 
 #include "motoflex/core/build_info.hpp"
 
@@ -15,11 +16,21 @@ std::string quoted(const std::string& text) {
   return out + "'";
 }
 
+// The last non-empty line (a Python traceback ends with the exception), at most 200 characters.
+std::string last_line(const std::string& text) {
+  std::size_t end = text.find_last_not_of(" \n\r\t");
+  if (end == std::string::npos) return "no output";
+  const std::size_t begin = text.rfind('\n', end);
+  std::string line = text.substr(begin == std::string::npos ? 0 : begin + 1,
+                                 end + 1 - (begin == std::string::npos ? 0 : begin + 1));
+  if (line.size() > 200) line = line.substr(0, 197) + "...";
+  return line;
+}
+
 }  // namespace
 
 bool run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
-  const std::filesystem::path path =
-      std::filesystem::path(data_directory()) / "scripts" / script;
+  const std::filesystem::path path = std::filesystem::path(data_directory()) / "scripts" / script;
   if (!std::filesystem::exists(path)) {
     std::fprintf(stderr, "motoflex: warning: no plot (missing %s)\n", path.c_str());
     return false;
@@ -28,10 +39,23 @@ bool run_plot_script(const std::string& script, const std::vector<std::string>& 
   const char* python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
   std::string command = std::string(python) + " " + quoted(path.string());
   for (const auto& argument : arguments) command += " " + quoted(argument);
-  if (std::system(command.c_str()) != 0) {
-    std::fprintf(stderr, "motoflex: warning: plotting failed (%s)\n", command.c_str());
+  // The script's output is captured: on success it is passed on; on failure (a full disk, no
+  // matplotlib) the user gets one warning line with the script's last words, not a traceback.
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) {
+    std::fprintf(stderr, "motoflex: warning: no plot (cannot start %s)\n", python);
     return false;
   }
+  std::string output;
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
+  if (pclose(pipe) != 0) {
+    std::fprintf(stderr, "motoflex: warning: %s failed, no plot: %s\n", script.c_str(),
+                 last_line(output).c_str());
+    return false;
+  }
+  std::fputs(output.c_str(), stdout);
   return true;
 }
 

@@ -1,5 +1,7 @@
 #include "motoflex/io/yaml_reader.hpp"
 
+#include "motoflex/core/error_collector.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -10,6 +12,8 @@
 #include <sstream>
 #include <system_error>
 
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
 #include <yaml-cpp/yaml.h>
 
 #include "motoflex/core/error.hpp"
@@ -57,26 +61,77 @@ std::string_view strip_plus(std::string_view text) {
   return text;
 }
 
+// Limits on what a config may make us walk: aliases share nodes, so "a: &a [*b, *b, ...]"
+// nested ten deep is a small file that expands to billions of nodes (an alias bomb), and deep
+// nesting recurses once per level.
+constexpr std::size_t kMaxYamlNodes = 1000000;  // after alias expansion; our largest is ~3000
+constexpr int kMaxYamlDepth = 64;               // our deepest config is 5 levels
+constexpr std::size_t kMaxYamlBytes = 64u << 20;
+
+// Counts documents without building them. yaml-cpp 0.7's LoadAll can loop forever on some
+// malformed input, pushing one null document per turn (found by fuzz/yaml_config_fuzzer.cpp;
+// upstream jbeder/yaml-cpp#1319), so the documents are counted here, at most two.
+class DocumentCounter final : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++documents_ == 2) second_line_ = mark.line >= 0 ? mark.line + 1 : 0;
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+  int documents() const { return documents_; }
+  int second_line() const { return second_line_; }
+
+ private:
+  int documents_ = 0;
+  int second_line_ = 0;
+};
+
+struct KeyCheck {
+  const std::string& file;
+  std::size_t nodes = 0;
+};
+
 // Rejects duplicate and non-scalar keys everywhere in the tree: yaml-cpp accepts both silently
-// (and then returns the first duplicate), which would hide a config mistake.
-void check_keys(const YAML::Node& node, const std::string& file, const std::string& field) {
+// (and then returns the first duplicate), which would hide a config mistake. Counts the nodes
+// (aliases expanded) and the depth against the limits above.
+void check_keys(const YAML::Node& node, KeyCheck& check, const std::string& field, int depth) {
+  if (++check.nodes > kMaxYamlNodes) {
+    throw InputError(check.file, line_of(node), field,
+                     "more than " + std::to_string(kMaxYamlNodes) +
+                         " values once aliases are expanded (an alias bomb?)");
+  }
+  if (depth > kMaxYamlDepth) {
+    throw InputError(check.file, line_of(node), field,
+                     "nested more than " + std::to_string(kMaxYamlDepth) + " levels deep");
+  }
   if (node.IsMap()) {
     std::set<std::string> seen;
     for (auto it = node.begin(); it != node.end(); ++it) {
       if (!it->first.IsScalar()) {
-        throw InputError(file, line_of(it->first), field, "mapping keys must be plain scalars");
+        throw InputError(check.file, line_of(it->first), field,
+                         "mapping keys must be plain scalars");
       }
       const std::string& key = it->first.Scalar();
       const std::string child_field = join_field(field, key);
       if (!seen.insert(key).second) {
-        throw InputError(file, line_of(it->first), child_field, "duplicate key '" + key + "'");
+        throw InputError(check.file, line_of(it->first), child_field,
+                         "duplicate key '" + key + "'");
       }
-      check_keys(it->second, file, child_field);
+      check_keys(it->second, check, child_field, depth + 1);
     }
   } else if (node.IsSequence()) {
     std::size_t index = 0;
     for (auto it = node.begin(); it != node.end(); ++it, ++index) {
-      check_keys(*it, file, field + "[" + std::to_string(index) + "]");
+      check_keys(*it, check, field + "[" + std::to_string(index) + "]", depth + 1);
     }
   }
 }
@@ -134,20 +189,31 @@ YamlValue YamlValue::load_file(const std::string& path) {
 }
 
 YamlValue YamlValue::parse(std::string_view text, const std::string& file) {
-  std::vector<YAML::Node> documents;
+  if (text.size() > kMaxYamlBytes) {
+    throw InputError(file, 0, "",
+                     "larger than " + std::to_string(kMaxYamlBytes >> 20) + " MB; not a config");
+  }
+  YAML::Node root;
+  int documents = 0;
   try {
-    documents = YAML::LoadAll(std::string(text));
+    std::istringstream stream{std::string(text)};
+    YAML::Parser parser(stream);
+    DocumentCounter counter;
+    while (counter.documents() < 2 && parser.HandleNextDocument(counter)) {
+    }
+    documents = counter.documents();
+    if (documents > 1) {
+      throw InputError(file, counter.second_line(), "",
+                       "expected one YAML document, found more (a '---' line?)");
+    }
+    if (documents == 1) root = YAML::Load(std::string(text));
   } catch (const YAML::Exception& e) {
     throw InputError(file, e.mark.line >= 0 ? e.mark.line + 1 : 0, "",
                      "YAML syntax error: " + e.msg);
   }
-  if (documents.size() > 1) {
-    throw InputError(file, line_of(documents[1]), "",
-                     "expected one YAML document, found " + std::to_string(documents.size()));
-  }
-  YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
-  check_keys(root, file, "");
-  return YamlValue(root, file, "", documents.empty() ? 0 : std::max(line_of(root), 1));
+  KeyCheck check{file};
+  check_keys(root, check, "", 0);
+  return YamlValue(root, file, "", documents == 0 ? 0 : std::max(line_of(root), 1));
 }
 
 void YamlValue::fail(const std::string& message) const {
@@ -165,7 +231,8 @@ void YamlValue::require_map() const {
 }
 
 void YamlValue::require_sequence() const {
-  if (!node_->IsSequence() && !node_->IsNull()) fail("expected a sequence, got " + describe(*node_));
+  if (!node_->IsSequence() && !node_->IsNull())
+    fail("expected a sequence, got " + describe(*node_));
 }
 
 void YamlValue::require_plain_scalar(const char* expected) const {
@@ -207,36 +274,56 @@ std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
   return result;
 }
 
+namespace {
+
+// "unknown key 'k' (did you mean 'x'?)" or the list of allowed keys.
+std::string unknown_key_message(const std::string& key,
+                                std::initializer_list<std::string_view> allowed) {
+  std::string_view closest;
+  int closest_distance = 3;  // suggest only within edit distance 2
+  for (std::string_view candidate : allowed) {
+    const int distance = edit_distance(key, candidate);
+    if (distance < closest_distance) {
+      closest_distance = distance;
+      closest = candidate;
+    }
+  }
+  // Our keys carry their unit ("rate_hz", "dt_s"): a key without its unit is a likely slip.
+  for (std::string_view candidate : allowed) {
+    if (!closest.empty()) break;
+    if (candidate.size() > key.size() + 1 && candidate.substr(0, key.size()) == key &&
+        candidate[key.size()] == '_') {
+      closest = candidate;
+    }
+  }
+  std::string message = "unknown key '" + key + "'";
+  if (!closest.empty()) {
+    message += " (did you mean '" + std::string(closest) + "'?)";
+  } else {
+    message += " (allowed:";
+    for (std::string_view candidate : allowed) message += " " + std::string(candidate);
+    message += ")";
+  }
+  return message;
+}
+
+}  // namespace
+
 void YamlValue::require_keys_within(std::initializer_list<std::string_view> allowed) const {
   for (const auto& [key, value] : entries()) {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-    std::string_view closest;
-    int closest_distance = 3;  // suggest only within edit distance 2
-    for (std::string_view candidate : allowed) {
-      const int distance = edit_distance(key, candidate);
-      if (distance < closest_distance) {
-        closest_distance = distance;
-        closest = candidate;
-      }
-    }
-    // Our keys carry their unit ("rate_hz", "dt_s"): a key without its unit is a likely slip.
-    for (std::string_view candidate : allowed) {
-      if (!closest.empty()) break;
-      if (candidate.size() > key.size() + 1 && candidate.substr(0, key.size()) == key &&
-          candidate[key.size()] == '_') {
-        closest = candidate;
-      }
-    }
-    std::string message = "unknown key '" + key + "'";
-    if (!closest.empty()) {
-      message += " (did you mean '" + std::string(closest) + "'?)";
-    } else {
-      message += " (allowed:";
-      for (std::string_view candidate : allowed) message += " " + std::string(candidate);
-      message += ")";
-    }
-    value.fail(message);
+    value.fail(unknown_key_message(key, allowed));
   }
+}
+
+void YamlValue::check_keys_within(std::initializer_list<std::string_view> allowed,
+                                  ErrorCollector& errors) const {
+  errors.check([&] {
+    for (const auto& [key, value] : entries()) {
+      if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+      errors.add(value.file(), value.line(), value.field(), unknown_key_message(key, allowed));
+    }
+  });
 }
 
 std::vector<YamlValue> YamlValue::items() const {

@@ -1,5 +1,11 @@
 #include "parameter_catalog.hpp"
 
+#include <cmath>
+#include <limits>
+
+#include "motoflex/model/joint_units.hpp"
+#include "motoflex/model/parameter_domain.hpp"
+
 namespace motoflex::detail {
 
 std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
@@ -8,13 +14,16 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
     specs.push_back({name, unit_from_parameter_name(name), neutral, lower, upper});
   };
   for (const auto& a : model.actuators) {
+    // A prismatic joint's names end in m and N (same numbers: these are neutral switches;
+    // a robot that fits them declares its own bounds).
+    const JointUnits u = joint_units(a);
     const std::string joint = "joint." + a.name + ".";
-    add(joint + "friction_nm", 0.0, 0.0, 5.0);
-    add(joint + "viscous_nm_s_per_rad", 0.0, 0.0, 5.0);
-    add(joint + "encoder_offset_rad", 0.0, -0.1, 0.1);
+    add(joint_parameter(a, "friction", u.effort), 0.0, 0.0, 5.0);
+    add(joint_parameter(a, "viscous", u.damping), 0.0, 0.0, 5.0);
+    add(joint_parameter(a, "encoder_offset", u.position), 0.0, -0.1, 0.1);
     add(joint + "encoder_scale", 1.0, 0.9, 1.1);
-    add(joint + "stribeck_nm", 0.0, 0.0, 2.0);
-    add(joint + "stribeck_velocity_rad_s", 0.1, 0.005, 2.0);
+    add(joint_parameter(a, "stribeck", u.effort), 0.0, 0.0, 2.0);
+    add(joint_parameter(a, "stribeck_velocity", u.velocity), 0.1, 0.005, 2.0);
     add(joint + "load_friction", 0.0, 0.0, 0.5);
   }
   add("motor.R_drift_per_s", 0.0, -0.01, 0.05);
@@ -35,11 +44,103 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
     add(joint + "load_friction_external", 0.0, 0.0, 0.5);
     add(joint + "load_friction_stribeck", 0.0, 0.0, 1.0);
     add(joint + "load_friction_external_stribeck", 0.0, 0.0, 1.0);
-    add(joint + "load_friction_quad_per_nm", 0.0, 0.0, 0.01);
-    add(joint + "load_friction_external_quad_per_nm", 0.0, 0.0, 0.01);
+    // Per N·m of torque, or per N of force on a slider (friction_family.hpp).
+    const std::string per = a.prismatic ? "_per_n" : "_per_nm";
+    add(joint + "load_friction_quad" + per, 0.0, 0.0, 0.01);
+    add(joint + "load_friction_external_quad" + per, 0.0, 0.0, 0.01);
     add(joint + "friction_model", 6.0, 1.0, 6.0);
   }
   return specs;
 }
 
 }  // namespace motoflex::detail
+
+namespace motoflex {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// One rule of the catalog: names whose last dotted part is `leaf` (or, when `full` is set,
+// the whole name) take `domain`. More specific rules come first.
+struct DomainRule {
+  const char* name;
+  bool full;  // match the whole dotted name rather than its last part
+  ParameterDomain domain;
+};
+
+constexpr ParameterDomain kPositive{0.0, kInf, true, false, false};
+constexpr ParameterDomain kNonNegative{0.0, kInf, false, false, false};
+constexpr ParameterDomain kUnitInterval{0.0, 1.0, false, false, false};
+
+// Why each one: the model's own invariants (src/sim/actuator/*: GearTrain, DcMotor, the
+// firmware, the friction family, the encoder), ODE's (CFM >= 0, ERP in [0, 1], mu >= 0).
+const DomainRule kDomainRules[] = {
+    {"flex.spring_nm_per_rad", true, kPositive},  // a link spring of 0 has no rest pose
+    {"world.erp", true, kUnitInterval},
+    {"world.cfm", true, kNonNegative},
+    {"contact.soft_erp", true, kUnitInterval},
+    {"contact.soft_cfm", true, kNonNegative},
+    {"contact.mu", true, kNonNegative},
+    {"contact.slip", true, kNonNegative},
+    {"bench.max_duty", true, kUnitInterval},
+    {"R_ohm", false, kPositive},
+    {"L_h", false, kNonNegative},
+    {"Kt_nm_per_a", false, kPositive},
+    {"ratio", false, kPositive},
+    {"gear_ratio", false, kPositive},
+    {"mass_kg_m2", false, kPositive},
+    {"mass_kg", false, kPositive},
+    {"length_m", false, kPositive},
+    {"backlash_rad", false, kNonNegative},
+    {"spring_nm_per_rad", false, kNonNegative},
+    {"viscous_nm_s_per_rad", false, kNonNegative},
+    {"motor_viscous_nm_s_per_rad", false, kNonNegative},
+    {"damping_nm_s_per_rad", false, kNonNegative},
+    {"friction_nm", false, kNonNegative},
+    {"stribeck_nm", false, kNonNegative},
+    {"stribeck_velocity_rad_s", false, kPositive},
+    {"stribeck_exponent", false, kPositive},
+    {"load_friction", false, kNonNegative},
+    {"load_friction_external", false, kNonNegative},
+    {"load_friction_stribeck", false, kNonNegative},
+    {"load_friction_external_stribeck", false, kNonNegative},
+    {"load_friction_quad_per_nm", false, kNonNegative},
+    {"load_friction_external_quad_per_nm", false, kNonNegative},
+    {"friction_model", false, {1.0, 6.0, false, false, true}},  // BAM's M1-M6
+    {"resolution_bits", false, {0.0, 32.0, false, false, true}},
+    {"noise_rad", false, kNonNegative},
+    {"delay_s", false, kNonNegative},
+    {"encoder_scale", false, kPositive},
+    {"armature_kg_m2", false, kNonNegative},
+    {"supply_v", false, kNonNegative},
+    {"supply_sag_ohm", false, kNonNegative},
+    {"current_limit_a", false, kNonNegative},
+    {"torque_max_nm", false, kNonNegative},
+    {"torque_off_s", false, kNonNegative},
+    {"no_load_speed_rad_s", false, kNonNegative},  // 0: no torque–speed curve
+    {"ticks_per_rev", false, {1.0, kInf, false, false, true}},
+    {"pwm_full_scale", false, kPositive},
+};
+
+// Gains of a controller (kp, ki_v_per_rad_s, gain_per_s, kd_divisor, ...): never negative.
+bool is_gain(const std::string& leaf) {
+  for (const char* prefix : {"kp", "ki", "kd", "gain_per_s", "pwm_limit", "deadband"}) {
+    if (leaf.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+ParameterDomain parameter_domain(const std::string& name) {
+  const std::size_t dot = name.rfind('.');
+  const std::string leaf = dot == std::string::npos ? name : name.substr(dot + 1);
+  for (const DomainRule& rule : kDomainRules) {
+    if (rule.full ? name == rule.name : leaf == rule.name) return rule.domain;
+  }
+  if (leaf.find("_divisor") != std::string::npos) return kPositive;
+  if (is_gain(leaf)) return kNonNegative;
+  return {};
+}
+
+}  // namespace motoflex

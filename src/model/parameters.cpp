@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -88,6 +91,7 @@ void ParameterRegistry::add(ParameterSpec spec) {
   if (!(spec.lower < spec.upper)) {
     throw std::invalid_argument("parameter '" + spec.name + "': lower bound must be below upper");
   }
+  domains_.push_back(parameter_domain(spec.name));
   index_.emplace(spec.name, specs_.size());
   specs_.push_back(std::move(spec));
 }
@@ -136,17 +140,78 @@ void ParameterSet::set(std::size_t index, double value) {
   values_.at(index) = value;
 }
 
-void apply_parameter_json_text(const std::string& text, const std::string& source,
-                               ParameterSet& set) {
+namespace {
+
+std::string format_number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.10g", value);
+  return buffer;
+}
+
+int line_at_byte(const std::string& text, std::size_t byte) {
+  const std::size_t end = std::min(byte, text.size());
+  return 1 +
+         static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(end), '\n'));
+}
+
+// Parses `text`, rejecting a key that appears twice in one object (nlohmann keeps the last
+// silently, which would hide a mistake in a hand-edited file).
+nlohmann::json parse_without_duplicates(const std::string& text, const std::string& source) {
+  std::vector<std::set<std::string>> open_objects;
+  std::string duplicate;
+  const auto callback = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& value) {
+    using Event = nlohmann::json::parse_event_t;
+    if (event == Event::object_start) open_objects.emplace_back();
+    if (event == Event::object_end && !open_objects.empty()) open_objects.pop_back();
+    if (event == Event::key && !open_objects.empty() && duplicate.empty() &&
+        !open_objects.back().insert(value.get<std::string>()).second) {
+      duplicate = value.get<std::string>();
+    }
+    return true;
+  };
   nlohmann::json document;
   try {
-    document = nlohmann::json::parse(text);
+    document = nlohmann::json::parse(text, callback);
   } catch (const nlohmann::json::parse_error& error) {
+    throw InputError(source, line_at_byte(text, error.byte), "",
+                     std::string("invalid JSON: ") + error.what());
+  } catch (const nlohmann::json::exception& error) {  // e.g. 406: a number beyond double
     throw InputError(source, 0, "", std::string("invalid JSON: ") + error.what());
   }
+  if (!duplicate.empty()) throw InputError(source, 0, duplicate, "given twice");
+  return document;
+}
+
+void check_value(const ParameterSet& set, std::size_t index, double number,
+                 const std::string& source, bool check_bounds,
+                 const ParameterFileOptions& options) {
+  const ParameterSpec& spec = set.registry().spec(index);
+  const ParameterDomain& domain = set.registry().domain(index);
+  if (!domain.contains(number)) {
+    throw InputError(source, 0, spec.name,
+                     format_number(number) + " is outside its domain (" + domain.describe() + ")");
+  }
+  if (!check_bounds || (number >= spec.lower && number <= spec.upper)) return;
+  const std::string message = format_number(number) + " is outside its bounds [" +
+                              format_number(spec.lower) + ", " + format_number(spec.upper) + "]";
+  if (!options.allow_out_of_bounds) {
+    throw InputError(source, 0, spec.name, message + " (--allow-out-of-bounds to use it anyway)");
+  }
+  std::fprintf(stderr, "motoflex: warning: %s: %s: %s\n", source.c_str(), spec.name.c_str(),
+               message.c_str());
+}
+
+}  // namespace
+
+void apply_parameter_json_text(const std::string& text, const std::string& source,
+                               ParameterSet& set, const ParameterFileOptions& options) {
+  nlohmann::json document = parse_without_duplicates(text, source);
+  // A fit's output holds values inside the fit's bounds, which may be wider than the robot's.
+  bool check_bounds = true;
   if (document.is_object() && document.contains("parameters") &&
       document["parameters"].is_object()) {
     document = document["parameters"];
+    check_bounds = false;
   }
   if (!document.is_object()) {
     throw InputError(source, 0, "", "expected a JSON object of parameter name -> value");
@@ -162,16 +227,22 @@ void apply_parameter_json_text(const std::string& text, const std::string& sourc
     if (!value.is_number()) throw InputError(source, 0, name, "expected a number");
     const double number = value.get<double>();
     if (!std::isfinite(number)) throw InputError(source, 0, name, "must be finite");
+    check_value(set, *index, number, source, check_bounds, options);
     set.set(*index, number);
   }
 }
 
-void apply_parameter_json_file(const std::string& path, ParameterSet& set) {
+void apply_parameter_json_file(const std::string& path, ParameterSet& set,
+                               const ParameterFileOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(path, 0, "", "is a folder, expected a parameter JSON file");
+  }
   std::ifstream in(path);
   if (!in) throw InputError(path, 0, "", "cannot open parameter file");
   std::stringstream buffer;
   buffer << in.rdbuf();
-  apply_parameter_json_text(buffer.str(), path, set);
+  apply_parameter_json_text(buffer.str(), path, set, options);
 }
 
 std::string parameter_set_to_json(const ParameterSet& set) {

@@ -2,6 +2,22 @@
 
 namespace motoflex {
 
+const char* to_string(ShapeKind kind) {
+  switch (kind) {
+    case ShapeKind::kBox:
+      return "box";
+    case ShapeKind::kSphere:
+      return "sphere";
+    case ShapeKind::kCylinder:
+      return "cylinder";
+    case ShapeKind::kCapsule:
+      return "capsule";
+    case ShapeKind::kMesh:
+      return "mesh";
+  }
+  return "?";
+}
+
 std::optional<std::size_t> RobotModel::actuator_index(const std::string& joint_name) const {
   for (std::size_t i = 0; i < actuators.size(); ++i) {
     if (actuators[i].name == joint_name) return i;

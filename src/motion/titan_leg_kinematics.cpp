@@ -174,9 +174,9 @@ TitanKinematics::TitanKinematics(const RobotModel& model)
     }
     // The sole is the bottom face of the foot's contact box, centred under the ankle.
     const BodySpec& foot = model.bodies[joint[3]->child_body];
-    const BoxGeom* sole_box = nullptr;
-    for (const BoxGeom& box : foot.boxes) {
-      if (box.is_foot) sole_box = &box;
+    const CollisionShape* sole_box = nullptr;
+    for (const CollisionShape& box : foot.collisions) {
+      if (box.is_foot && box.kind == ShapeKind::kBox) sole_box = &box;
     }
     if (sole_box == nullptr) layout_error(leg_name + "_J4", "its child body has no foot box");
     const Eigen::Vector3d box_centre = foot.com_W0_m + sole_box->X_BG.translation();

@@ -66,9 +66,19 @@ std::vector<ParameterRow> parameter_rows(const nlohmann::json& inputs, const nlo
       rows.push_back(std::move(row));
     }
   }
+  const nlohmann::json* sensitivity = nullptr;
+  if (summary.is_object() && summary.contains("sensitivity") &&
+      summary["sensitivity"].is_object() && summary["sensitivity"].contains("parameters")) {
+    sensitivity = &summary["sensitivity"]["parameters"];
+  }
   for (auto& row : rows) {
     if (const auto it = uncertainty.intervals.find(row.name); it != uncertainty.intervals.end()) {
       row.interval = it->second;
+    }
+    if (sensitivity != nullptr && sensitivity->is_object() && sensitivity->contains(row.name)) {
+      const nlohmann::json& entry = (*sensitivity)[row.name];
+      row.sensitivity = number_at(entry, "relative_fitness_change_per_bound_width");
+      row.undetermined = entry.is_object() && !entry.value("determined", true);
     }
   }
   return rows;
@@ -85,7 +95,8 @@ std::string parameter_table_html(const std::vector<ParameterRow>& rows) {
   std::string html =
       "<table class=\"parameters\"><thead><tr><th>parameter</th><th>unit</th><th>start</th>"
       "<th>lower</th><th>upper</th><th>fitted</th><th>standard error</th>"
-      "<th>95 % confidence interval</th></tr></thead><tbody>\n";
+      "<th>95 % confidence interval</th><th title=\"relative fitness change per bound-width around "
+      "the best point\">sensitivity</th></tr></thead><tbody>\n";
   for (const auto& row : rows) {
     html += "<tr><td><code>" + escape_html(row.name) + "</code>" +
             (row.log_scale ? " <span class=\"tag\">log</span>" : "") + "</td><td>" +
@@ -102,6 +113,11 @@ std::string parameter_table_html(const std::vector<ParameterRow>& rows) {
                   : "<td class=\"num\">[" + escape_html(format_number(row.interval.lower)) + ", " +
                         escape_html(format_number(row.interval.upper)) + "]</td>";
     }
+    html += row.undetermined
+                ? "<td class=\"num bound\" title=\"the training data cannot determine "
+                  "this value\">" +
+                      escape_html(format_number(row.sensitivity)) + " ⚠ not determined</td>"
+                : cell(row.sensitivity);
     html += "</tr>\n";
   }
   html += "</tbody></table>\n";

@@ -100,7 +100,8 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
   }
   read_motion(root, overrides, scenario);
   if (overrides.parameters_json) {
-    apply_parameter_json_file(*overrides.parameters_json, scenario.parameters);
+    apply_parameter_json_file(*overrides.parameters_json, scenario.parameters,
+                              {overrides.allow_out_of_bounds});
   }
   if (overrides.duration_s) {
     scenario.commands = truncate_trajectory(scenario.commands, *overrides.duration_s);

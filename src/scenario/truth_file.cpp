@@ -75,7 +75,10 @@ Scenario truth_recording_scenario(const TruthFile& truth, std::size_t index,
       scenario.parameters.set(name, value.as_double());
     }
   }
-  if (extra.parameters_json) apply_parameter_json_file(*extra.parameters_json, scenario.parameters);
+  if (extra.parameters_json) {
+    apply_parameter_json_file(*extra.parameters_json, scenario.parameters,
+                              {extra.allow_out_of_bounds});
+  }
   scenario.rollout.seed = mix64(static_cast<std::uint64_t>(truth.seed) * 0x100000001B3ULL + index);
   return scenario;
 }

@@ -12,6 +12,16 @@ dJointID create_axis_motor(dWorldID world, const RobotModel& model,
   dBodyID parent = bodies[joint.parent_body];
   dBodyID child = bodies[joint.child_body];
   const Eigen::Vector3d& axis = spec.axis == 1 ? joint.axis1_W0 : joint.axis2_W0;
+  if (joint.kind == JointKind::kSlider) {
+    // Along a slider a linear motor: its row acts on the child's velocity relative to the
+    // parent along the axis (fixed in the parent, or global on the welded base).
+    dJointID motor = dJointCreateLMotor(world, nullptr);
+    dJointAttach(motor, child, parent);
+    dJointSetLMotorNumAxes(motor, 1);
+    const int frame = parent != nullptr ? 2 : 0;  // relative to body2 = parent, or global
+    dJointSetLMotorAxis(motor, 0, frame, axis.x(), axis.y(), axis.z());
+    return motor;
+  }
   // The axis rides on the body that carries it: a hinge axis is fixed in both bodies, a
   // universal joint's axis 1 in the parent and axis 2 in the child; a static body is the world.
   dBodyID carrier =
@@ -32,18 +42,32 @@ dJointID create_axis_motor(dWorldID world, const RobotModel& model,
   return motor;
 }
 
+void set_axis_motor_param(dJointID motor, int parameter, dReal value) {
+  if (dJointGetType(motor) == dJointTypeLMotor) {
+    dJointSetLMotorParam(motor, parameter, value);
+  } else {
+    dJointSetAMotorParam(motor, parameter, value);
+  }
+}
+
 void target_current_rate(dJointID motor) {
-  // ODE's angular motor row constrains axis·ω₁ − axis·ω₂ (body 2 absent: the world at rest).
+  // ODE's angular motor row constrains axis·ω₁ − axis·ω₂ (body 2 absent: the world at rest),
+  // its linear motor row axis·v₁ − axis·v₂.
+  const bool linear = dJointGetType(motor) == dJointTypeLMotor;
   dVector3 axis;
-  dJointGetAMotorAxis(motor, 0, axis);
+  if (linear) {
+    dJointGetLMotorAxis(motor, 0, axis);
+  } else {
+    dJointGetAMotorAxis(motor, 0, axis);
+  }
   double rate = 0.0;
   for (int k = 0; k < 2; ++k) {
     const dBodyID body = dJointGetBody(motor, k);
     if (body == nullptr) continue;
-    const dReal* w = dBodyGetAngularVel(body);
+    const dReal* w = linear ? dBodyGetLinearVel(body) : dBodyGetAngularVel(body);
     rate += (k == 0 ? 1.0 : -1.0) * (axis[0] * w[0] + axis[1] * w[1] + axis[2] * w[2]);
   }
-  dJointSetAMotorParam(motor, dParamVel, rate);
+  set_axis_motor_param(motor, dParamVel, rate);
 }
 
 std::vector<int> moved_bodies(const RobotModel& model, int joint) {
@@ -63,6 +87,17 @@ std::vector<int> moved_bodies(const RobotModel& model, int joint) {
 double gravity_torque_nm(const OdeAxis& ode, const std::vector<dBodyID>& load_bodies,
                          const Eigen::Vector3d& gravity_m_s2) {
   dVector3 anchor, axis;
+  if (ode.slider) {
+    // Along a slider the external force: gravity on what it moves, along the axis (N).
+    dJointGetSliderAxis(ode.joint, axis);
+    double force_n = 0.0;
+    for (const dBodyID body : load_bodies) {
+      dMass mass;
+      dBodyGetMass(body, &mass);
+      force_n += mass.mass * gravity_m_s2.dot(Eigen::Vector3d(axis[0], axis[1], axis[2]));
+    }
+    return ode.sign * force_n;
+  }
   if (!ode.universal) {
     dJointGetHingeAnchor(ode.joint, anchor);
     dJointGetHingeAxis(ode.joint, axis);

@@ -18,9 +18,13 @@ namespace motoflex::detail {
 
 // An angular motor about `actuator`'s axis between its joint's two bodies (`bodies`: the
 // rollout's ODE body per model body, nullptr for a welded one). Its row acts on the relative
-// rate (ω_carrier − ω_other)·axis, ± the joint rate. Parameters are left to the caller.
+// rate (ω_carrier − ω_other)·axis, ± the joint rate; on a slider a linear motor on the relative
+// velocity. Parameters are left to the caller (set_axis_motor_param).
 dJointID create_axis_motor(dWorldID world, const RobotModel& model,
                            const std::vector<dBodyID>& bodies, std::size_t actuator);
+
+// dJointSetAMotorParam or dJointSetLMotorParam, whichever `motor` is (a slider's is linear).
+void set_axis_motor_param(dJointID motor, int parameter, dReal value);
 
 // Sets a one-axis angular motor's target velocity to its bodies' relative rate now: with
 // unbounded force and CFM = h/J its row is the inertia J (see Rollout::Impl::add_inertia_row).

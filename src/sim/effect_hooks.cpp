@@ -11,7 +11,7 @@ bool effect_applies(const Effect& effect, const RobotModel& model, const std::st
   if (effect.needs_feet) {
     bool has_feet = false;
     for (const auto& body : model.bodies) {
-      for (const auto& box : body.boxes) has_feet = has_feet || box.is_foot;
+      for (const auto& shape : body.collisions) has_feet = has_feet || shape.is_foot;
     }
     if (!has_feet) return false;
   }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/model/joint_units.hpp"
 
 namespace motoflex::detail {
 namespace {
@@ -15,12 +16,30 @@ bool has_flex_joints(const RobotModel& model) {
   return false;
 }
 
+// Only shapes that collide with the ground read the contact parameters: a fixed-base arm
+// whose links may not touch the ground needs none.
+bool touches_ground(const RobotModel& model) {
+  if (!model.ground) return false;
+  for (const auto& body : model.bodies) {
+    if (body.is_static) continue;
+    for (const auto& shape : body.collisions) {
+      if (shape.contact != GroundContact::kFall) return true;
+    }
+  }
+  return false;
+}
+
 const char* const kBenchLoadNames[] = {"bench.mass_kg", "bench.length_m", "bench.armature_kg_m2"};
 const char* const kFlexNames[] = {"flex.spring_nm_per_rad", "flex.damping_nm_s_per_rad",
                                   "flex.friction_nm"};
-const char* const kWorldNames[] = {
-    "contact.mu", "contact.soft_erp",       "contact.soft_cfm", "contact.slip",  "world.erp",
-    "world.cfm",  "sensor.resolution_bits", "sensor.noise_rad", "sensor.delay_s"};
+const char* const kContactNames[] = {"contact.mu", "contact.soft_erp", "contact.soft_cfm",
+                                     "contact.slip"};
+const char* const kWorldNames[] = {"world.erp", "world.cfm", "sensor.resolution_bits",
+                                   "sensor.noise_rad", "sensor.delay_s"};
+
+std::string encoder_offset_name(const ActuatorSpec& a) {
+  return joint_parameter(a, "encoder_offset", joint_units(a).position);
+}
 
 }  // namespace
 
@@ -29,12 +48,15 @@ std::vector<std::string> rollout_wide_parameter_names(const RobotModel& model,
   std::vector<std::string> names;
   for (const auto& a : model.actuators) {
     names.push_back("joint." + a.name + ".encoder_scale");
-    names.push_back("joint." + a.name + ".encoder_offset_rad");
+    names.push_back(encoder_offset_name(a));
   }
   if (point_mass_arm)
     names.insert(names.end(), std::begin(kBenchLoadNames), std::end(kBenchLoadNames));
   if (has_flex_joints(model))
     names.insert(names.end(), std::begin(kFlexNames), std::end(kFlexNames));
+  if (touches_ground(model)) {
+    names.insert(names.end(), std::begin(kContactNames), std::end(kContactNames));
+  }
   names.insert(names.end(), std::begin(kWorldNames), std::end(kWorldNames));
   return names;
 }
@@ -46,7 +68,7 @@ ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSe
   out.encoders.resize(model.actuators.size());
   for (std::size_t i = 0; i < model.actuators.size(); ++i) {
     const std::string joint = "joint." + model.actuators[i].name + ".";
-    out.encoders[i] = {get(joint + "encoder_scale"), get(joint + "encoder_offset_rad")};
+    out.encoders[i] = {get(joint + "encoder_scale"), get(encoder_offset_name(model.actuators[i]))};
   }
   if (point_mass_arm) {
     out.bench_load = {get("bench.mass_kg"), get("bench.length_m"), get("bench.armature_kg_m2")};
@@ -63,8 +85,10 @@ ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSe
       throw ModelError("flex.spring_nm_per_rad must be positive, damping and friction >= 0");
     }
   }
-  out.contact = {get("contact.mu"), get("contact.soft_erp"), get("contact.soft_cfm"),
-                 get("contact.slip")};
+  if (touches_ground(model)) {
+    out.contact = {get("contact.mu"), get("contact.soft_erp"), get("contact.soft_cfm"),
+                   get("contact.slip")};
+  }
   out.world_erp = get("world.erp");
   out.world_cfm = get("world.cfm");
   out.encoder.resolution_bits = static_cast<int>(std::lround(get("sensor.resolution_bits")));

@@ -1,5 +1,8 @@
 #include "motoflex/sim/robot_parameter_check.hpp"
 
+#include <set>
+#include <sstream>
+
 #include "motoflex/core/error_collector.hpp"
 #include "motoflex/io/yaml_reader.hpp"
 #include "motoflex/model/robot_loader.hpp"
@@ -32,27 +35,61 @@ void collect_missing(const RobotModel& model, const std::string& servo, ErrorCol
     if (model.parameters.contains(name) || !reported.insert(name).second) return;
     errors.add(source, line, field, "missing '" + name + "', required by " + who + advice);
   };
+  // Joints whose law is unknown (reported on its own) are skipped, the others still checked.
+  bool point_mass_arm = false;
   for (std::size_t a = 0; a < model.actuators.size(); ++a) {
-    const ServoLawInfo& law = servo_law(actuator_servo_name(model, servo, a));
-    for (const auto& name : law.parameter_names(model, a)) {
-      report(name, "servo '" + law.name + "'");
+    const ServoLawInfo* law = find_servo_law(actuator_servo_name(model, servo, a));
+    if (law == nullptr) continue;
+    if (a == 0) point_mass_arm = law->point_mass_arm;
+    for (const auto& name : law->parameter_names(model, a)) {
+      report(name, "servo '" + law->name + "'");
     }
   }
-  for (const auto& name : rollout_parameter_names(model, servo)) report(name, "the rollout");
+  for (const auto& name : detail::rollout_wide_parameter_names(model, point_mass_arm)) {
+    report(name, "the rollout");
+  }
 }
 
-// Unknown law names in the robot's assignment (robot.yaml `servo:` and per-joint laws).
-bool collect_unknown_laws(const RobotModel& model, ErrorCollector& errors) {
+// Where robot.yaml assigns an actuator's law: its `servos:` entry, or `servo:`.
+std::pair<int, std::string> law_source(const RobotModel& model, const ActuatorSpec& actuator) {
+  if (!actuator.servo.empty()) {
+    const auto it = model.source.servos_lines.find(actuator.servo_scope);
+    if (it != model.source.servos_lines.end()) {
+      return {it->second, "servos." + actuator.servo_scope};
+    }
+  }
+  return {model.source.servo_line, "servo"};
+}
+
+// Unknown law names in the robot's assignment (robot.yaml `servo:` and `servos:`), and laws
+// given joints they cannot drive (a prismatic joint under a law for revolute ones).
+bool collect_unknown_laws(const RobotModel& model, const std::string& servo,
+                          ErrorCollector& errors) {
   bool ok = true;
-  const auto check = [&](const std::string& name) {
-    if (find_servo_law(name) != nullptr) return;
+  const auto known = [&](const std::string& name, int line, const std::string& field) {
+    if (find_servo_law(name) != nullptr) return true;
     ok = false;
-    errors.add(model.source.yaml_path, model.source.servo_line, "servo",
+    errors.add(model.source.yaml_path, line, field,
                "unknown servo '" + name + "' (" + servo_law_names() + ")");
+    return false;
   };
-  check(model.default_servo);
-  for (const auto& actuator : model.actuators) {
-    if (!actuator.servo.empty() && actuator.servo != model.default_servo) check(actuator.servo);
+  if (servo.empty()) known(model.default_servo, model.source.servo_line, "servo");
+  std::string prismatic_laws;
+  for (const ServoLawInfo& law : servo_laws()) {
+    if (law.drives_prismatic) prismatic_laws += (prismatic_laws.empty() ? "" : "|") + law.name;
+  }
+  for (std::size_t a = 0; a < model.actuators.size(); ++a) {
+    const ActuatorSpec& actuator = model.actuators[a];
+    const std::string& name = actuator_servo_name(model, servo, a);
+    const auto [line, field] = law_source(model, actuator);
+    if (servo.empty() && name != model.default_servo && !known(name, line, field)) continue;
+    const ServoLawInfo* law = find_servo_law(name);
+    if (law == nullptr || !actuator.prismatic || law->drives_prismatic) continue;
+    ok = false;
+    errors.add(model.source.yaml_path, line, field,
+               "joint '" + actuator.name + "' is prismatic and servo '" + name +
+                   "' drives revolute joints only (prismatic: " + prismatic_laws +
+                   "; assign one in `servos:`)");
   }
   return ok;
 }
@@ -82,10 +119,11 @@ std::set<std::string> known_parameter_names(const RobotModel& model) {
   for (const ServoLawInfo& law : servo_laws()) {
     for (auto& name : rollout_parameter_names(model, law.name)) known.insert(std::move(name));
   }
-  // Flexible links are split only on request (physics.flex_sub_bodies), so their names are
-  // known whether or not this model has flex joints.
+  // Flexible links are split only on request (physics.flex_sub_bodies), and contacts are
+  // read only by robots with shapes that touch the ground, so their names are known either way.
   for (const char* name :
-       {"flex.spring_nm_per_rad", "flex.damping_nm_s_per_rad", "flex.friction_nm"}) {
+       {"flex.spring_nm_per_rad", "flex.damping_nm_s_per_rad", "flex.friction_nm", "contact.mu",
+        "contact.soft_erp", "contact.soft_cfm", "contact.slip"}) {
     known.insert(name);
   }
   // The effect parameters every robot has (neutral unless declared).
@@ -95,19 +133,36 @@ std::set<std::string> known_parameter_names(const RobotModel& model) {
   return known;
 }
 
-void check_robot_parameters(const RobotModel& model) {
+void check_robot_parameters(const RobotModel& model, ErrorCollector& errors, bool report_unknown) {
   const std::string& file = model.source.yaml_path;
-  ErrorCollector errors;
   const std::set<std::string> known = known_parameter_names(model);
   for (const auto& [name, line] : model.source.parameter_lines) {
-    if (known.count(name)) continue;
+    if (!report_unknown || known.count(name)) continue;
     const std::string hint = closest_known(known, name);
     errors.add(file, line, "parameters." + name,
                "unknown parameter" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
   }
-  if (collect_unknown_laws(model, errors)) {
-    collect_missing(model, "", errors, file, model.source.parameters_line, "parameters", "");
+  // A default outside the parameter's domain (a gear ratio of 0, a negative contact.mu) is a
+  // model that cannot be simulated as written.
+  const ParameterRegistry& registry = model.parameters;
+  for (const auto& [name, line] : model.source.parameter_lines) {
+    const auto index = registry.find(name);
+    if (!index || registry.domain(*index).contains(registry.spec(*index).default_value)) continue;
+    std::ostringstream value;
+    value << registry.spec(*index).default_value;
+    errors.add(file, line, "parameters." + name,
+               "default " + value.str() + " is outside its domain (" +
+                   registry.domain(*index).describe() + ")");
   }
+  // Missing parameters are reported for the joints whose law is known even when another
+  // joint's law is not (every problem of the folder at once).
+  collect_unknown_laws(model, "", errors);
+  collect_missing(model, "", errors, file, model.source.parameters_line, "parameters", "");
+}
+
+void check_robot_parameters(const RobotModel& model) {
+  ErrorCollector errors;
+  check_robot_parameters(model, errors, true);
   errors.throw_if_any();
 }
 
@@ -119,15 +174,33 @@ void check_servo_parameters(const RobotModel& model, const std::string& servo,
                      "unknown servo '" + servo + "' (" + servo_law_names() + ")");
   }
   ErrorCollector errors;
+  ErrorCollector law_errors;
+  if (!collect_unknown_laws(model, servo, law_errors)) {
+    // The robot's joints the law cannot drive, reported where the law was chosen.
+    for (const InputError& error : law_errors.errors())
+      errors.add(source, line, field, error.message());
+    errors.throw_if_any();
+  }
   collect_missing(model, servo, errors, source, line, field,
                   " (robot '" + model.name + "' does not declare it; add it to robot.yaml)");
   errors.throw_if_any();
 }
 
-RobotModel load_robot(const std::string& robot_dir, const StructureOptions& structure) {
-  RobotModel model = load_robot_model(robot_dir, structure);
-  check_robot_parameters(model);
+std::optional<RobotModel> load_robot(const std::string& robot_dir,
+                                     const StructureOptions& structure, ErrorCollector& errors) {
+  const std::size_t before = errors.size();
+  std::optional<RobotModel> model = load_robot_model(robot_dir, structure, errors);
+  // A declared name for a joint robot.yaml got wrong would be reported twice (the joint, then
+  // each of its parameters): unknown names only count when the structure is sound.
+  if (model) check_robot_parameters(*model, errors, errors.size() == before);
   return model;
+}
+
+RobotModel load_robot(const std::string& robot_dir, const StructureOptions& structure) {
+  ErrorCollector errors;
+  std::optional<RobotModel> model = load_robot(robot_dir, structure, errors);
+  errors.throw_if_any();
+  return std::move(*model);
 }
 
 }  // namespace motoflex

@@ -8,6 +8,8 @@
 #include <optional>
 
 #include "axis_rows.hpp"
+#include "ground_colliders.hpp"
+#include "mimic_coupling.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/model/body_kinematics.hpp"
 #include "motoflex/sim/actuator/servo_law.hpp"
@@ -97,21 +99,16 @@ struct Rollout::Impl {
   std::vector<dBodyID> bodies;  // nullptr for a static (welded) body
   std::vector<dJointID> joints;
   std::vector<dJointID> flex_friction_motors;
-  std::vector<dGeomID> geoms;
-  struct GeomRef {
-    dGeomID geom;
-    dBodyID body;
-    bool is_foot;
-    std::size_t body_index;
-  };
-  std::vector<GeomRef> foot_geoms;
+  detail::GroundColliders colliders;
+  std::vector<detail::ShapeGeom> foot_geoms;     // feet: contacts and force sensors
+  std::vector<detail::ShapeGeom> contact_geoms;  // contact_links: contacts, never a fall
+  std::vector<detail::ShapeGeom> other_geoms;    // touching the ground is a fall
   std::vector<dJointFeedback> joint_feedback;    // per model joint (enable_joint_feedback)
-  std::vector<dContactGeom> contact_points;      // dCollide's output, max_contacts_per_foot
-  std::vector<dJointFeedback> contact_feedback;  // max_contacts_per_foot per foot box
-  std::vector<std::size_t> contact_owner;        // foot box of each used feedback slot
+  std::vector<dJointFeedback> contact_feedback;  // max_contacts per foot shape
+  std::vector<std::size_t> contact_owner;        // foot shape of each used feedback slot
   std::size_t contacts_used = 0;
-  std::vector<Eigen::Vector3d> foot_force_n;  // ground force on each foot box (world frame)
-  std::vector<GeomRef> other_geoms;
+  std::vector<Eigen::Vector3d> foot_force_n;  // ground force on each foot shape (world frame)
+  std::vector<detail::MimicCoupling> mimics;
 
   std::vector<detail::OdeAxis> axes;                 // per actuator
   std::vector<double> joint_torque1, joint_torque2;  // per model joint, accumulated each step
@@ -132,7 +129,8 @@ struct Rollout::Impl {
   std::vector<JointEncoder> encoders;
   std::vector<double> applied_torque_nm;
   dContact contact_template{};
-  double elapsed_s = 0.0;  // since the rollout was created (settling included)
+  double elapsed_s = 0.0;         // since the rollout was created (settling included)
+  bool step_interrupted = false;  // an ODE error was thrown out of dWorldStep
 
   Impl(const RobotModel& m, const ParameterSet& values, const RolloutOptions& o)
       : model(m),
@@ -143,8 +141,10 @@ struct Rollout::Impl {
 
   ~Impl() {
     if (world != nullptr) dWorldSetStepThreadingImplementation(world, nullptr, nullptr);
-    if (threading != nullptr) dThreadingFreeImplementation(threading);
-    for (dGeomID g : geoms) dGeomDestroy(g);
+    // An ODE assertion inside a step (thrown by our handler; the rollout then ends as
+    // diverged) leaves that step's jobs queued, and freeing the queue would assert again from
+    // inside ODE's destructors: the queue of such a rollout is left allocated.
+    if (threading != nullptr && !step_interrupted) dThreadingFreeImplementation(threading);
     if (ground != nullptr) dGeomDestroy(ground);
     if (contact_group != nullptr) dJointGroupDestroy(contact_group);
     if (world != nullptr) dWorldDestroy(world);  // also destroys bodies and joints
@@ -156,6 +156,7 @@ struct Rollout::Impl {
   void build_actuators(const ParameterSet& values);
   dJointID add_axis_motor(std::size_t actuator);
   void add_damping_row(std::size_t actuator, double damping_nm_s_per_rad);
+  void add_mimic_couplings();
   void add_inertia_row(std::size_t actuator, double armature_kg_m2);
   void update_inertia_rows();
   double external_torque_nm(std::size_t actuator) const;
@@ -222,23 +223,29 @@ void Rollout::Impl::build_bodies() {
       dBodySetPosition(body, com.x(), com.y(), com.z());
       bodies[b] = body;
     }
-    for (const BoxGeom& box : spec.boxes) {
-      dGeomID geom = dCreateBox(nullptr, box.size_m.x(), box.size_m.y(), box.size_m.z());
-      geoms.push_back(geom);
-      dMatrix3 R;
-      to_ode_rotation(box.X_BG.linear(), R);
-      if (bodies[b] != nullptr) {
-        dGeomSetBody(geom, bodies[b]);
-        const Eigen::Vector3d offset = box.X_BG.translation() + spec.com_W0_m - com;
-        dGeomSetOffsetPosition(geom, offset.x(), offset.y(), offset.z());
-        dGeomSetOffsetRotation(geom, R);
-      } else {
-        const Eigen::Vector3d p = box.X_BG.translation() + spec.com_W0_m;
-        dGeomSetPosition(geom, p.x(), p.y(), p.z());
-        dGeomSetRotation(geom, R);
-        continue;  // the welded base never falls
+    // Without a ground there is nothing to collide with or to fall onto.
+    if (!model.ground) continue;
+    for (const CollisionShape& shape : spec.collisions) {
+      // On a body the offset from the ODE body's position; on the welded base a world pose.
+      const Eigen::Vector3d p = shape.X_BG.translation() + spec.com_W0_m -
+                                (bodies[b] != nullptr ? com : Eigen::Vector3d::Zero());
+      const detail::ShapeGeom geom = colliders.add(shape, bodies[b], b, p);
+      if (bodies[b] == nullptr) continue;  // the welded base never falls
+      switch (shape.contact) {
+        case GroundContact::kFoot: {
+          // The shape's own contact limit, capped by the rollout's per-foot limit.
+          detail::ShapeGeom foot = geom;
+          foot.max_contacts = std::min(foot.max_contacts, options.max_contacts_per_foot);
+          foot_geoms.push_back(foot);
+          break;
+        }
+        case GroundContact::kContact:
+          contact_geoms.push_back(geom);
+          break;
+        case GroundContact::kFall:
+          other_geoms.push_back(geom);
+          break;
       }
-      (box.is_foot ? foot_geoms : other_geoms).push_back({geom, bodies[b], box.is_foot, b});
     }
   }
 }
@@ -251,6 +258,18 @@ void Rollout::Impl::build_joints() {
     dBodyID parent = bodies[spec.parent_body];
     dBodyID child = bodies[spec.child_body];
     const Eigen::Vector3d& a = spec.anchor_W0_m;
+    if (spec.kind == JointKind::kSlider) {
+      // body1 = child: ODE's slider position is body1 relative to body2 along the axis, ours.
+      dJointID joint = dJointCreateSlider(world, nullptr);
+      dJointAttach(joint, child, parent);
+      dJointSetSliderAxis(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
+      if (std::isfinite(spec.lower1_rad)) {
+        dJointSetSliderParam(joint, dParamLoStop, spec.lower1_rad);
+        dJointSetSliderParam(joint, dParamHiStop, spec.upper1_rad);
+      }
+      joints[j] = joint;
+      continue;
+    }
     if (spec.kind == JointKind::kHinge) {
       // body1 = child: ODE's hinge angle is body1 relative to body2, our convention.
       dJointID joint = dJointCreateHinge(world, nullptr);
@@ -318,10 +337,10 @@ void Rollout::Impl::build_joints() {
       dJointSetAMotorNumAxes(motor, 2);
       dJointSetAMotorAxis(motor, 0, 1, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
       dJointSetAMotorAxis(motor, 1, 2, spec.axis2_W0.x(), spec.axis2_W0.y(), spec.axis2_W0.z());
-      dJointSetAMotorParam(motor, dParamVel, 0.0);
-      dJointSetAMotorParam(motor, dParamVel2, 0.0);
-      dJointSetAMotorParam(motor, dParamFMax, params.flex.friction_nm);
-      dJointSetAMotorParam(motor, dParamFMax2, params.flex.friction_nm);
+      detail::set_axis_motor_param(motor, dParamVel, 0.0);
+      detail::set_axis_motor_param(motor, dParamVel2, 0.0);
+      detail::set_axis_motor_param(motor, dParamFMax, params.flex.friction_nm);
+      detail::set_axis_motor_param(motor, dParamFMax2, params.flex.friction_nm);
       flex_friction_motors.push_back(motor);
     }
   }
@@ -335,12 +354,7 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
   axis_rows.assign(n, AxisRows{});
   for (std::size_t i = 0; i < n; ++i) {
     const ActuatorSpec& spec = model.actuators[i];
-    detail::OdeAxis axis;
-    axis.joint = joints[spec.joint];
-    axis.universal = model.joints[spec.joint].kind != JointKind::kHinge;
-    axis.axis = spec.axis;
-    axis.sign = axis.universal ? -1.0 : 1.0;
-    axes.push_back(axis);
+    axes.push_back(detail::ode_axis(joints[spec.joint], model.joints[spec.joint], spec.axis));
     encoders.emplace_back(params.encoder, options.dt_s,
                           RandomStream({options.seed, kEncoderNoisePurpose, i}));
     const ParameterReader reader(values, laws[i]->name);
@@ -352,8 +366,8 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
     if (armature_kg_m2 > 0.0) add_inertia_row(i, armature_kg_m2);
     if (servo.has_friction_row()) {
       axis_rows[i].friction = add_axis_motor(i);
-      dJointSetAMotorParam(axis_rows[i].friction, dParamVel, 0.0);
-      dJointSetAMotorParam(axis_rows[i].friction, dParamFMax, 0.0);
+      detail::set_axis_motor_param(axis_rows[i].friction, dParamVel, 0.0);
+      detail::set_axis_motor_param(axis_rows[i].friction, dParamFMax, 0.0);
     }
     if (servo.needs_external_torque()) {
       axis_rows[i].external_torque = true;
@@ -374,9 +388,21 @@ void Rollout::Impl::add_damping_row(std::size_t actuator, double damping_nm_s_pe
   // −c·ω at the end of the step (ODE's spring-damper equivalence with k = 0). It stays stable
   // for any c·h/I, where an explicit torque diverges once c·h/I > 2.
   dJointID motor = add_axis_motor(actuator);
-  dJointSetAMotorParam(motor, dParamVel, 0.0);
-  dJointSetAMotorParam(motor, dParamFMax, dInfinity);
-  dJointSetAMotorParam(motor, dParamCFM, 1.0 / damping_nm_s_per_rad);
+  detail::set_axis_motor_param(motor, dParamVel, 0.0);
+  detail::set_axis_motor_param(motor, dParamFMax, dInfinity);
+  detail::set_axis_motor_param(motor, dParamCFM, 1.0 / damping_nm_s_per_rad);
+}
+
+void Rollout::Impl::add_mimic_couplings() {
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const auto& mimic = model.joints[j].mimic;
+    if (!mimic) continue;
+    const JointSpec& leader = model.joints[mimic->leader_joint];
+    mimics.push_back({detail::ode_axis(joints[j], model.joints[j], 1),
+                      detail::ode_axis(joints[mimic->leader_joint], leader, mimic->leader_axis),
+                      mimic->multiplier, mimic->offset,
+                      mimic->leader_axis == 1 ? leader.actuator1 : leader.actuator2});
+  }
 }
 
 void Rollout::Impl::add_inertia_row(std::size_t actuator, double armature_kg_m2) {
@@ -391,9 +417,9 @@ void Rollout::Impl::add_inertia_row(std::size_t actuator, double armature_kg_m2)
   // N·q̇) couples with J/N only; MuJoCo's armature, which the MJCF export writes, has neither.
   axis_rows[actuator].inertia = add_axis_motor(actuator);
   dJointID motor = axis_rows[actuator].inertia;
-  dJointSetAMotorParam(motor, dParamVel, 0.0);
-  dJointSetAMotorParam(motor, dParamFMax, dInfinity);
-  dJointSetAMotorParam(motor, dParamCFM, options.dt_s / armature_kg_m2);
+  detail::set_axis_motor_param(motor, dParamVel, 0.0);
+  detail::set_axis_motor_param(motor, dParamFMax, dInfinity);
+  detail::set_axis_motor_param(motor, dParamCFM, options.dt_s / armature_kg_m2);
 }
 
 void Rollout::Impl::update_inertia_rows() {
@@ -409,7 +435,10 @@ double Rollout::Impl::external_torque_nm(std::size_t actuator) const {
 void Rollout::Impl::place(const std::vector<double>& pose_rad) {
   std::vector<Eigen::Isometry3d> poses = body_poses(model, pose_rad);
   if (!model.fixed_base) {
-    const double lowest = lowest_foot_point_z(model, poses);
+    // Feet go to the ground; a robot without feet is placed by all its shapes (held in the
+    // air, or dropped onto whatever touches first).
+    double lowest = lowest_foot_point_z(model, poses);
+    if (!std::isfinite(lowest)) lowest = lowest_shape_point_z(model, poses);
     if (std::isfinite(lowest)) {
       const double clearance_m =
           options.hold_torso ? kHeldTorsoClearance_m : model.initial_clearance_m;
@@ -431,6 +460,13 @@ void Rollout::Impl::place(const std::vector<double>& pose_rad) {
     dBodySetRotation(bodies[b], R);
     dBodySetLinearVel(bodies[b], 0.0, 0.0, 0.0);
     dBodySetAngularVel(bodies[b], 0.0, 0.0, 0.0);
+  }
+  for (std::size_t i = 0; i < axes.size(); ++i) axes[i].sync_turns(pose_rad[i]);
+  for (auto& mimic : mimics) {
+    // A passive leader starts at its build position, 0.
+    const double leader = mimic.leader_actuator >= 0 ? pose_rad[mimic.leader_actuator] : 0.0;
+    mimic.leader.sync_turns(leader);
+    mimic.follower.sync_turns(mimic.multiplier * leader + mimic.offset);
   }
   for (std::size_t i = 0; i < encoders.size(); ++i) encoders[i].reset(encoder_input(i));
   // A held torso is a kinematic body: it does not move, and the joints act on it as on an
@@ -466,7 +502,7 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
     const ServoOutput out = servos[i]->step(input);
     axis.set_motor(out.row.velocity_rad_s, out.row.fmax_nm);
     if (axis_rows[i].friction != nullptr) {
-      dJointSetAMotorParam(axis_rows[i].friction, dParamFMax, out.friction_row.fmax_nm);
+      detail::set_axis_motor_param(axis_rows[i].friction, dParamFMax, out.friction_row.fmax_nm);
     }
     applied_torque_nm[i] = out.torque_nm;
     if (std::isfinite(out.torque_nm)) {
@@ -478,6 +514,8 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
     if (joint_torque1[j] == 0.0 && joint_torque2[j] == 0.0) continue;
     if (model.joints[j].kind == JointKind::kHinge) {
       dJointAddHingeTorque(joints[j], joint_torque1[j]);
+    } else if (model.joints[j].kind == JointKind::kSlider) {
+      dJointAddSliderForce(joints[j], joint_torque1[j]);
     } else {
       dJointAddUniversalTorques(joints[j], joint_torque1[j], joint_torque2[j]);
     }
@@ -506,25 +544,30 @@ void Rollout::Impl::apply_flex_springs() {
 }
 
 void Rollout::Impl::collide_feet() {
+  dContactGeom contacts[detail::kMaxGroundContacts];
   std::size_t used = 0;
-  const int max_contacts = static_cast<int>(contact_points.size());
+  const auto attach = [&](const detail::ShapeGeom& shape, int k) {
+    dContact contact = contact_template;
+    contact.geom = contacts[k];
+    dJointID joint = dJointCreateContact(world, contact_group, &contact);
+    dJointAttach(joint, shape.body, nullptr);
+    return joint;
+  };
   for (std::size_t f = 0; f < foot_geoms.size(); ++f) {
-    const GeomRef& foot = foot_geoms[f];
-    const int n =
-        dCollide(foot.geom, ground, max_contacts, contact_points.data(), sizeof(dContactGeom));
+    const int n = detail::GroundColliders::collide(foot_geoms[f], ground, contacts);
     for (int k = 0; k < n; ++k) {
-      dContact contact = contact_template;
-      contact.geom = contact_points[k];
-      dJointID joint = dJointCreateContact(world, contact_group, &contact);
-      dJointAttach(joint, foot.body, nullptr);
       // The contact force is read back after the step (foot force sensor); the feedback
       // buffers are preallocated, one per possible contact.
-      dJointSetFeedback(joint, &contact_feedback[used]);
+      dJointSetFeedback(attach(foot_geoms[f], k), &contact_feedback[used]);
       contact_owner[used] = f;
       ++used;
     }
   }
   contacts_used = used;
+  for (const detail::ShapeGeom& shape : contact_geoms) {
+    const int n = detail::GroundColliders::collide(shape, ground, contacts);
+    for (int k = 0; k < n; ++k) attach(shape, k);
+  }
 }
 
 void Rollout::Impl::read_foot_forces() {
@@ -536,7 +579,7 @@ void Rollout::Impl::read_foot_forces() {
 }
 
 std::optional<std::string> Rollout::Impl::fall_reason(const Rollout& self) const {
-  for (const GeomRef& ref : other_geoms) {
+  for (const detail::ShapeGeom& ref : other_geoms) {
     dReal aabb[6];
     dGeomGetAABB(ref.geom, aabb);
     if (aabb[4] <= 0.0) return model.bodies[ref.body_index].name + " touched the ground";
@@ -582,9 +625,10 @@ Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
   impl_->build_bodies();
   impl_->build_joints();
   impl_->build_actuators(parameters);
-  const auto max_contacts = static_cast<std::size_t>(options.max_contacts_per_foot);
-  impl_->contact_points.resize(max_contacts);
-  impl_->contact_feedback.resize(impl_->foot_geoms.size() * max_contacts);
+  impl_->add_mimic_couplings();
+  std::size_t foot_contacts = 0;
+  for (const auto& foot : impl_->foot_geoms) foot_contacts += foot.max_contacts;
+  impl_->contact_feedback.resize(foot_contacts);
   impl_->contact_owner.resize(impl_->contact_feedback.size());
   impl_->foot_force_n.assign(impl_->foot_geoms.size(), Eigen::Vector3d::Zero());
   impl_->place(initial_pose_rad);
@@ -601,12 +645,16 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
   Impl& s = *impl_;
   try {
     s.apply_servos(command_now_rad, command_next_rad);
+    for (const auto& mimic : s.mimics) mimic.drive(s.options.dt_s);
     s.update_inertia_rows();
     s.apply_flex_springs();
     s.collide_feet();
+    // Our ODE error handler throws: an error inside the step interrupts it (see ~Impl).
+    s.step_interrupted = true;
     const int ok = s.options.solver == StepSolver::kStep
                        ? dWorldStep(s.world, s.options.dt_s)
                        : detail::seeded_quick_step(s.world, s.options.dt_s, s.quick_step_seed);
+    s.step_interrupted = false;
     s.read_foot_forces();
     dJointGroupEmpty(s.contact_group);
     if (!ok) throw ModelError("ODE ran out of memory in the step");

@@ -18,15 +18,19 @@ struct CommandResult {
   std::string stderr_text;
 };
 
-inline CommandResult run_motoflex(const std::string& arguments) {
+// Runs `motoflex <arguments>`; with timeout_s > 0 under timeout(1), which ends a hang with exit
+// code 124.
+inline CommandResult run_motoflex_with_timeout(const std::string& arguments, int timeout_s) {
   // ctest runs tests in parallel processes: one stderr file per process and call.
   static int calls = 0;
   const auto dir = std::filesystem::temp_directory_path() / "motoflex_cli_test";
   std::filesystem::create_directories(dir);
   const auto err =
       dir / ("stderr_" + std::to_string(getpid()) + "_" + std::to_string(++calls) + ".txt");
+  const std::string prefix =
+      timeout_s > 0 ? "timeout -s KILL " + std::to_string(timeout_s) + " " : "";
   const std::string command =
-      std::string(MOTOFLEX_TEST_BINARY) + " " + arguments + " 2> " + err.string();
+      prefix + std::string(MOTOFLEX_TEST_BINARY) + " " + arguments + " 2> " + err.string();
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -43,6 +47,10 @@ inline CommandResult run_motoflex(const std::string& arguments) {
   }
   std::filesystem::remove(err);
   return result;
+}
+
+inline CommandResult run_motoflex(const std::string& arguments) {
+  return run_motoflex_with_timeout(arguments, 0);
 }
 
 // A fresh, empty folder for one test. The process id keeps tests that ctest runs at the same

@@ -17,9 +17,10 @@ namespace motoflex::testing {
 namespace {
 
 bool is_free(const FitConfig& config, const std::string& name) {
-  return std::any_of(config.free_parameters.begin(), config.free_parameters.end(), [&](const FreeParameter& p) {
-    return std::find(p.targets.begin(), p.targets.end(), name) != p.targets.end();
-  });
+  return std::any_of(
+      config.free_parameters.begin(), config.free_parameters.end(), [&](const FreeParameter& p) {
+        return std::find(p.targets.begin(), p.targets.end(), name) != p.targets.end();
+      });
 }
 
 std::string error_of(const std::string& fit) {

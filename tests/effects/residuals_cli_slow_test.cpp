@@ -38,14 +38,18 @@ TEST(ResidualsCli, FindsTheHiddenDelayAndMatchesTheFitItAnalyses) {
   const CommandResult fit = run_motoflex(
       "fit " + kSource + "/scenarios/fit/bench_hidden.yaml --data " + kSource +
       "/reference_data/hidden/sensor_delay/train --validation " + kSource +
-      "/reference_data/hidden/sensor_delay/validation --max-evaluations 160 --out " +
-      run.string());
+      "/reference_data/hidden/sensor_delay/validation --max-evaluations 160 --out " + run.string());
   ASSERT_EQ(fit.exit_code, 0) << fit.stderr_text;
-  const CommandResult residuals = run_motoflex("residuals " + run.string());
+  // 160 evaluations end the fit before it converges: residuals needs --force, and says so.
+  const CommandResult refused = run_motoflex("residuals " + run.string());
+  EXPECT_EQ(refused.exit_code, 2) << refused.stdout_text;
+  const CommandResult residuals = run_motoflex("residuals " + run.string() + " --force");
   ASSERT_EQ(residuals.exit_code, 0) << residuals.stderr_text;
 
   const nlohmann::json analysis = read_json(run / "residuals" / "residuals.json");
   const nlohmann::json summary = read_json(run / "summary.json");
+  EXPECT_FALSE(summary["converged"].get<bool>());
+  EXPECT_FALSE(analysis["ranking_reliable"].get<bool>());
   // The analysis simulates the fit's best parameters: its training RMS is the fit's.
   EXPECT_NEAR(analysis["train"]["rms_deg"].get<double>(),
               summary["rms_deg"]["overall"].get<double>(), 1e-9);

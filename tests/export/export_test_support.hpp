@@ -69,14 +69,23 @@ inline std::string write_best_json(const std::filesystem::path& dir, const Robot
     parameters[spec.name] = it == values.end() ? spec.default_value : it->second;
   }
   best["parameters"] = parameters;
-  best["provenance"] = {{"fit", "fits/test.yaml"},
-                        {"config_hash", "abc123"},
-                        {"robot", model.name},
-                        {"date", "2025-01-02T03:04:05Z"},
-                        {"motoflex_version", "0.1.0"}};
+  best["provenance"] = {
+      {"fit", "fits/test.yaml"},
+      {"config_hash", "abc123"},
+      {"robot", model.name},
+      {"date", "2025-01-02T03:04:05Z"},
+      {"motoflex_version", "0.1.0"},
+      {"run", dir.string()},
+      {"data",
+       {{{"role", "train"}, {"path", "logs/walk.csv"}, {"hash", "0123abcd"}},
+        {{"role", "validation"}, {"path", "logs/kick.csv"}, {"hash", "4567ef"}}}}};
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "best.json").string();
   std::ofstream(path) << best.dump(2) << "\n";
+  // The fit's summary beside it, with a 95 % interval for one of the two free parameters.
+  std::ofstream(dir / "summary.json")
+      << R"({"confidence_intervals": {"motor.R_ohm": {"lower": 6.25, "upper": 6.75}}})"
+      << "\n";
   return path;
 }
 

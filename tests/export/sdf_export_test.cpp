@@ -92,7 +92,7 @@ TEST(SdfExport, NaoLoadsWithoutErrorsAndKeepsTheFittedValues) {
   // Foot contact surface.
   std::string foot_body;
   for (const auto& body : f.model->bodies) {
-    for (const auto& box : body.boxes) {
+    for (const auto& box : body.collisions) {
       if (box.is_foot && foot_body.empty()) foot_body = body.name;
     }
   }

@@ -6,12 +6,14 @@
 #include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <filesystem>
 #include <map>
 
 #include "export_test_support.hpp"
 #include "motoflex/export/actuator_export.hpp"
 #include "motoflex/export/parser_check.hpp"
 #include "motoflex/export/urdf_export.hpp"
+#include "motoflex/model/robot_loader.hpp"
 
 namespace motoflex {
 namespace {
@@ -115,6 +117,54 @@ TEST(UrdfExport, UrdfdomErrorsAreReported) {
 TEST(UrdfExport, MujocosUrdfReaderAcceptsTheExport) {
   const auto f = testing::fitted_fixture("servo_pendulum", "bench");
   EXPECT_EQ(mujoco_errors(export_urdf(*f.input)), "");
+}
+
+// A URDF from a ROS package often has its own <transmission> per joint: the export replaces the
+// actuated joints' ones (one each, with the fitted reduction) and keeps the others.
+TEST(UrdfExport, TheFilesOwnTransmissionsAreReplacedNotDuplicated) {
+  const auto dir = testing::fresh_export_dir("transmissions");
+  std::filesystem::copy(testing::robot_dir("servo_pendulum"), dir / "robot",
+                        std::filesystem::copy_options::recursive);
+  std::string urdf_path;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "robot")) {
+    if (entry.path().extension() == ".urdf") urdf_path = entry.path().string();
+  }
+  ASSERT_FALSE(urdf_path.empty());
+  TiXmlDocument source;
+  ASSERT_TRUE(source.LoadFile(urdf_path.c_str()));
+  const std::string own =
+      "<transmission name=\"own_pendulum\"><type>transmission_interface/SimpleTransmission</type>"
+      "<joint name=\"pendulum\"><hardwareInterface>x</hardwareInterface></joint>"
+      "<actuator name=\"m\"><mechanicalReduction>7</mechanicalReduction></actuator>"
+      "</transmission>";
+  const std::string other =
+      "<transmission name=\"unrelated\"><joint name=\"not_actuated\"/></transmission>";
+  for (const std::string& xml : {own, other}) {
+    TiXmlDocument fragment;
+    fragment.Parse(xml.c_str());
+    source.RootElement()->InsertEndChild(*fragment.RootElement());
+  }
+  ASSERT_TRUE(source.SaveFile(urdf_path.c_str()));
+
+  StructureOptions structure;
+  const RobotModel model = load_robot_model((dir / "robot").string(), structure);
+  ExportInput input{model, ParameterSet(model.parameters), "bench", {}, 0.001};
+  TiXmlDocument document;
+  document.Parse(export_urdf(input).c_str());
+  ASSERT_FALSE(document.Error());
+  int pendulum = 0;
+  int unrelated = 0;
+  for (const TiXmlElement* t = document.RootElement()->FirstChildElement("transmission");
+       t != nullptr; t = t->NextSiblingElement("transmission")) {
+    const std::string joint = t->FirstChildElement("joint")->Attribute("name");
+    pendulum += joint == "pendulum" ? 1 : 0;
+    unrelated += joint == "not_actuated" ? 1 : 0;
+    if (joint == "pendulum") {
+      EXPECT_STREQ(t->Attribute("name"), "pendulum_transmission");
+    }
+  }
+  EXPECT_EQ(pendulum, 1);
+  EXPECT_EQ(unrelated, 1);
 }
 
 }  // namespace

@@ -93,11 +93,57 @@ TEST(FitCli, SigtermWritesACheckpointAndExitsCleanly) {
   int status = 0;
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(WEXITSTATUS(status), 4);  // exit_code::kInterrupted
   EXPECT_TRUE(fs::exists(dir / "run" / "checkpoint.json"));
   EXPECT_TRUE(fs::exists(dir / "run" / "best.json"));
   EXPECT_NE(read_text(dir / "run.log").find("interrupted"), std::string::npos);
   EXPECT_LT(generations_written(dir / "run"), 200u);
+}
+
+TEST(FitCli, TwoWritersCannotShareAFolder) {
+  const fs::path dir = fresh_dir("fit_two_writers");
+  record_pendulum_log(dir / "data", "sin_sin");
+  const std::string fit = write_pendulum_fit(dir, dir / "data", kSmallEs, "{generations: 200}");
+  const pid_t pid = spawn_fit(fit, dir / "run", dir / "run.log");
+  ASSERT_TRUE(wait_for_generations(dir / "run", 1, pid));
+  const std::string rows_before = read_text(dir / "run" / "generations.csv");
+  // A second fit and a resume into the running fit's folder fail at once, naming its PID.
+  for (const std::string& command :
+       {"fit " + fit + " --out " + (dir / "run").string(), "resume " + (dir / "run").string()}) {
+    const CommandResult second = run_motoflex(command);
+    EXPECT_EQ(second.exit_code, 2) << command;
+    EXPECT_NE(second.stderr_text.find("pid " + std::to_string(pid)), std::string::npos)
+        << second.stderr_text;
+  }
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  // The first fit's rows are all its own: one row per generation, numbered 1, 2, 3, ...
+  std::ifstream csv(dir / "run" / "generations.csv");
+  std::string line;
+  std::getline(csv, line);
+  for (std::size_t expected = 1; std::getline(csv, line); ++expected) {
+    EXPECT_EQ(std::stoul(line.substr(0, line.find(','))), expected) << line;
+  }
+  EXPECT_FALSE(rows_before.empty());
+}
+
+TEST(FitCli, FolderKilledBeforeItsFirstCheckpointSaysRerunFit) {
+  const fs::path dir = fresh_dir("fit_no_checkpoint");
+  record_pendulum_log(dir / "data", "sin_sin");
+  const std::string fit = write_pendulum_fit(dir, dir / "data", kSmallEs, "{generations: 2}");
+  fs::create_directories(dir / "run");
+  write_text(dir / "run" / "run.json", "{\"fit\": \"" + fit + "\", \"overrides\": {}}");
+  write_text(dir / "run" / ".checkpoint.json.tmp-1-0-1", "{\"half");
+  const CommandResult resumed = run_motoflex("resume " + (dir / "run").string());
+  EXPECT_EQ(resumed.exit_code, 2);
+  EXPECT_NE(resumed.stderr_text.find("motoflex fit " + fit), std::string::npos)
+      << resumed.stderr_text;
+  // Fit then starts over in that folder and removes the killed run's temporary file.
+  const CommandResult again = run_motoflex("fit " + fit + " --out " + (dir / "run").string());
+  EXPECT_EQ(again.exit_code, 0) << again.stderr_text;
+  EXPECT_FALSE(fs::exists(dir / "run" / ".checkpoint.json.tmp-1-0-1"));
+  EXPECT_TRUE(fs::exists(dir / "run" / "checkpoint.json"));
 }
 
 void expect_one_line_error(const CommandResult& result, const std::string& expected) {

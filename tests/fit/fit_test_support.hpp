@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -87,11 +88,12 @@ inline std::string generations_without_seconds(const std::filesystem::path& run_
 }
 
 // best.json without its provenance date.
+// best.json without what names the run rather than its result: the date and the run folder.
 inline std::string best_without_date(const std::filesystem::path& run_dir) {
-  std::string text = read_text(run_dir / "best.json");
-  const auto at = text.find("\"date\"");
-  if (at != std::string::npos) text.erase(at, text.find('\n', at) - at);
-  return text;
+  nlohmann::ordered_json best = nlohmann::ordered_json::parse(read_text(run_dir / "best.json"));
+  best["provenance"].erase("date");
+  best["provenance"].erase("run");
+  return best.dump(2);
 }
 
 // Runs the fit at `fit` with 1 and with 2 threads into dir/one and dir/two and expects the

@@ -168,7 +168,9 @@ TEST_F(YamlReaderTest, RejectsDuplicateKeysAnywhere) {
 }
 
 TEST_F(YamlReaderTest, RejectsMultipleDocumentsAndComplexKeys) {
-  expect_input_error([] { YamlValue::parse("a: 1\n---\nb: 2\n", "multi.yaml"); }, "multi.yaml", 3,
+  // The line of the second document's '---' marker (the documents are counted by an event
+  // handler, not by yaml-cpp's LoadAll, which can loop forever on malformed input).
+  expect_input_error([] { YamlValue::parse("a: 1\n---\nb: 2\n", "multi.yaml"); }, "multi.yaml", 2,
                      "");
   expect_input_error([] { YamlValue::parse("? [a, b]\n: 1\n", "key.yaml"); }, "key.yaml", 1, "");
 }

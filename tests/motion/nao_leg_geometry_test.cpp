@@ -61,7 +61,8 @@ TEST(NaoLegGeometry, AWalkPlannedForTheBoxRobotPutsItsSolesWhereThePlanSays) {
     double lowest[2] = {INFINITY, INFINITY};
     Eigen::Vector3d centre[2];
     for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-      for (const BoxGeom& box : model.bodies[b].boxes) {
+      for (const CollisionShape& box : model.bodies[b].collisions) {
+        if (box.kind != ShapeKind::kBox) continue;
         if (!box.is_foot) continue;
         const int side = box.link == "l_foot" ? 0 : 1;
         const Eigen::Isometry3d X = poses[b] * box.X_BG;

@@ -29,8 +29,8 @@ double foot_height_m(const RobotModel& model, const Rollout& rollout, int body) 
   const Eigen::Vector3d& p = state.position_m;
   const Eigen::Matrix3d& R = state.R_WB;
   double lowest = 1e9;
-  for (const BoxGeom& box : model.bodies[body].boxes) {
-    if (!box.is_foot) continue;
+  for (const CollisionShape& box : model.bodies[body].collisions) {
+    if (!box.is_foot || box.kind != ShapeKind::kBox) continue;
     for (int corner = 0; corner < 8; ++corner) {
       const Eigen::Vector3d local(((corner & 1) ? 0.5 : -0.5) * box.size_m.x(),
                                   ((corner & 2) ? 0.5 : -0.5) * box.size_m.y(),

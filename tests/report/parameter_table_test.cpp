@@ -128,5 +128,26 @@ TEST(ParameterTableHtml, NamesAreEscaped) {
   EXPECT_NE(html.find("&lt;b&gt;x&lt;/b&gt;"), std::string::npos);
 }
 
+TEST(ParameterRows, SensitivityFromTheSummaryAndTheUndeterminedFlagged) {
+  const json summary = json::parse(R"({"sensitivity": {"parameters": {
+    "pid.kp_v_per_rad": {"relative_fitness_change_per_bound_width": 46.5, "determined": true},
+    "joint.*Roll.friction_nm": {"relative_fitness_change_per_bound_width": 0.0,
+                                "determined": false}}}})");
+  const auto rows = parameter_rows(inputs_json(), best_json(), summary,
+                                   read_parameter_uncertainty(summary, "summary.json"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].sensitivity, 46.5);
+  EXPECT_FALSE(rows[0].undetermined);
+  EXPECT_EQ(rows[1].sensitivity, 0.0);
+  EXPECT_TRUE(rows[1].undetermined);
+  const std::string html = parameter_table_html(rows);
+  EXPECT_NE(html.find("<th title=\"relative fitness change per bound-width"), std::string::npos);
+  EXPECT_NE(html.find("not determined"), std::string::npos) << html;
+  // A summary without the field (older runs): not available, nothing flagged.
+  const auto old_rows = parameter_rows(inputs_json(), best_json(), json::object(), {});
+  EXPECT_TRUE(std::isnan(old_rows[0].sensitivity));
+  EXPECT_EQ(parameter_table_html(old_rows).find("not determined"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace motoflex::report

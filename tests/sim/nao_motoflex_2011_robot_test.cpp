@@ -30,7 +30,8 @@ struct BoxInWorld {
 
 BoxInWorld box_of(const RobotModel& model, const Rollout& rollout, const std::string& link) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    for (const BoxGeom& box : model.bodies[b].boxes) {
+    for (const CollisionShape& box : model.bodies[b].collisions) {
+      if (box.kind != ShapeKind::kBox) continue;
       if (box.link.substr(0, box.link.find('#')) != link) continue;
       const Rollout::BodyState state = rollout.body_state(b);
       BoxInWorld out;
@@ -128,11 +129,11 @@ TEST(NaoMotoflex2011Robot, SplitsTheLegBoxesAsTheOriginal) {
     SCOPED_TRACE(leg.link);
     int pieces = 0;
     for (const BodySpec& body : model.bodies) {
-      if (body.boxes.size() != 1 || body.boxes[0].link.rfind(leg.link, 0) != 0) continue;
+      if (body.collisions.size() != 1 || body.collisions[0].link.rfind(leg.link, 0) != 0) continue;
       ++pieces;
       const double m = leg.mass_kg / 2.0, h = leg.height_m / 2.0;
       EXPECT_NEAR(body.mass_kg, m, 1e-12);
-      EXPECT_NEAR(body.boxes[0].size_m.z(), h, 1e-12);
+      EXPECT_NEAR(body.collisions[0].size_m.z(), h, 1e-12);
       EXPECT_NEAR(body.inertia_kg_m2(0, 0), m / 12.0 * (0.05 * 0.05 + h * h), 1e-12);
       EXPECT_NEAR(body.inertia_kg_m2(2, 2), m / 12.0 * (2 * 0.05 * 0.05), 1e-12);
     }

@@ -57,11 +57,15 @@ struct LoopResult {
   std::uint64_t probe_rollouts = 0;  // signature probes and the refits' start checks
   double fit_seconds = 0.0;          // sum of the fits' own wall times
   double wall_seconds = 0.0;         // this invocation
+  // Non-empty when the base fit did not converge and the loop was forced on: why every
+  // iteration's ranking is unreliable.
+  std::string unreliable_reason;
 };
 
 // Runs the loop of the fit config at `fit_path` (with its `loop:` options) into its out dir and
 // writes loop.json and report.md (with PNG plots) there. Throws InputError when the config has
-// no validation logs (the loop decides on them).
-LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides);
+// no validation logs (the loop decides on them), and when the base fit did not converge unless
+// `force` (then every ranking is marked unreliable; see convergence_guard.hpp).
+LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides, bool force = false);
 
 }  // namespace motoflex

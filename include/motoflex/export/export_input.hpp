@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,22 @@
 #include "motoflex/model/robot_model.hpp"
 
 namespace motoflex {
+
+// One log a fit read: "train" or "validation", its path and the hash of its CSV (hash_text).
+struct ProvenanceDataFile {
+  std::string role;
+  std::string path;
+  std::string hash;
+};
+
+// A fitted parameter's value and, when the fit computed one, its 95 % confidence interval
+// (summary.json's "confidence_intervals"; NaN when absent).
+struct ProvenanceFitted {
+  std::string name;  // free parameter (a name or a tied pattern)
+  double value = 0.0;
+  double lower = std::numeric_limits<double>::quiet_NaN();
+  double upper = std::numeric_limits<double>::quiet_NaN();
+};
 
 // Where a fitted parameter set came from: best.json's "fitness", "free" and "provenance"
 // (written by `motoflex fit`, src/fit/fit_runner.cpp). Fields a file does not have stay empty.
@@ -22,7 +39,19 @@ struct FitProvenance {
   std::string motoflex_version;              // motoflex version that ran the fit
   std::vector<std::string> free_parameters;  // what the optimiser searched ("free"); may be
                                              // patterns such as "joint.*.friction_nm" (ties)
+  std::string run_dir;                       // the fit's run folder
+  std::vector<ProvenanceDataFile> data;      // the logs it was fitted and validated on
+  std::vector<ProvenanceFitted> fitted;      // "free" values with intervals where known
 };
+
+// The provenance as "key: value" lines for the exporters' comments and metadata: exported_by,
+// servo, source, fit, run, config_hash, fitness, date, fit_motoflex_version, one "data" line per
+// log (role path #hash) and one "fitted" line per free parameter (value [lower, upper]).
+std::vector<std::string> provenance_lines(const FitProvenance& provenance,
+                                          const std::string& servo);
+// The lines as the text of an XML comment ("motoflex provenance:" and one indented line each;
+// "--", which XML forbids in comments, written as "- -").
+std::string provenance_comment(const FitProvenance& provenance, const std::string& servo);
 
 // Everything an exporter reads: the robot as motoflex simulates it (the structure options of
 // the model decide lumped bodies, universal joints and flexible sub-bodies), a value for every

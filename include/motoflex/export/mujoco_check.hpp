@@ -26,6 +26,7 @@ struct MujocoComparison {
   double motoflex_steps_per_s = 0.0;      // wall-clock rate of Rollout::step (one thread)
   std::string motoflex_end;               // how the motoflex rollout ended ("completed", ...)
   std::string mujoco_version;
+  std::size_t geoms = 0;  // geoms of the exported model (0: nothing a viewer could show)
 };
 
 // Simulates the same commanded trajectory in motoflex (ODE, input.servo, dWorldStep) and in

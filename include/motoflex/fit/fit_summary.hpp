@@ -18,6 +18,10 @@ struct FittedParameter {
   double upper = 0.0;
   double value = 0.0;
   bool log_scale = false;
+  // Relative fitness change per bound-width around the best point (finite differences of 1 %
+  // of the range; < 0: not measured). Below 0.1 the training data cannot determine the value.
+  double sensitivity = -1.0;
+  bool undetermined() const { return sensitivity >= 0.0 && sensitivity < 0.1; }
   // Where the value sits between its bounds, 0…1 (log scale where searched so); a value at a
   // bound (< 1 % or > 99 %) usually means the bounds cut the optimum off.
   double bound_fraction() const;
@@ -46,6 +50,9 @@ struct FitSummary {
   std::uint64_t individuals_stopped_early = 0;
   std::uint64_t frames_simulated = 0;
   std::uint64_t frames_saved = 0;
+  // Candidates the model rejected (a parameter outside what the model accepts), scored +inf.
+  std::uint64_t invalid_candidates = 0;
+  std::vector<std::string> invalid_reasons;  // up to 5 distinct, sorted
   nlohmann::ordered_json details;  // summary.json as written (per-joint and per-log errors, ...)
 
   // "nao_quick: max_generations (not converged) after 3 generations, 36 evaluations: best

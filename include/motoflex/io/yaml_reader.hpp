@@ -14,6 +14,8 @@ class Node;
 
 namespace motoflex {
 
+class ErrorCollector;
+
 // One value of a YAML config together with where it came from: the file, the 1-based line and
 // the dotted field path ("physics.dt_s", "joints[3].name"). Every accessor is strict and throws
 // InputError("<file>", line, "<field>", ...) for anything that is not exactly what was asked
@@ -61,6 +63,9 @@ class YamlValue {
   // it is within edit distance 2 or is the key plus a unit suffix ("dt" → "dt_s"): "did you
   // mean 'dt_s'?"; otherwise the message lists the allowed keys.
   void require_keys_within(std::initializer_list<std::string_view> allowed) const;
+  // The same check, every unknown key recorded in `errors` (none thrown).
+  void check_keys_within(std::initializer_list<std::string_view> allowed,
+                         ErrorCollector& errors) const;
 
   // Sequence access, in document order; item fields are "<field>[i]" (0-based). Throws
   // InputError if this value is neither a sequence nor empty.

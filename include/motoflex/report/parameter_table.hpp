@@ -20,6 +20,10 @@ struct ParameterRow {
   double fitted = kNotAvailable;
   bool log_scale = false;
   ParameterInterval interval;  // all not available unless the summary has them
+  // summary.json "sensitivity": relative fitness change per bound-width around the best point,
+  // and whether the training data determine the value (not available in older summaries).
+  double sensitivity = kNotAvailable;
+  bool undetermined = false;
 };
 
 // One row per free parameter: names, units, start and bounds from inputs.json's "free" list

@@ -63,6 +63,7 @@ struct ScenarioOverrides {
   // key that is not one.
   std::map<std::string, double> walk_options;
   std::optional<std::string> parameters_json;  // --params P.json
+  bool allow_out_of_bounds = false;            // --allow-out-of-bounds (for parameters_json)
   // A `physics:` section read on top of the scenario's (a truth file's), before the single
   // overrides below.
   std::optional<YamlValue> physics;

@@ -10,7 +10,8 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
   a.armature_kg_m2 = get(armature_parameter_name(input.model.actuators[actuator].name));
   a.kv_nm_s_per_rad = detail::stiff_servo_kv_nm_s_per_rad(input, actuator, a.armature_kg_m2);
   a.kp_nm_per_rad = a.kv_nm_s_per_rad / input.dt_s;
-  a.effort_nm = get("ideal.torque_max_nm");
+  a.effort_nm =
+      get(input.model.actuators[actuator].prismatic ? "ideal.force_max_n" : "ideal.torque_max_nm");
 }
 
 }  // namespace

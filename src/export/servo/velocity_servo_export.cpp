@@ -1,4 +1,5 @@
 #include "motoflex/export/servo_export.hpp"
+#include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
 #include "stiff_servo.hpp"
 
@@ -7,14 +8,17 @@ namespace {
 
 void fill(const ExportInput& input, std::size_t actuator, const ParameterReader& get,
           ActuatorExport& a) {
-  const std::string joint = "joint." + input.model.actuators[actuator].name + ".";
-  a.armature_kg_m2 = get(armature_parameter_name(input.model.actuators[actuator].name));
+  const ActuatorSpec& spec = input.model.actuators[actuator];
+  const std::string joint = "joint." + spec.name + ".";
+  a.armature_kg_m2 = get(armature_parameter_name(spec.name));
   a.kv_nm_s_per_rad = detail::stiff_servo_kv_nm_s_per_rad(input, actuator, a.armature_kg_m2);
   a.kp_nm_per_rad = a.kv_nm_s_per_rad * get(joint + "gain_per_s");
-  a.effort_nm = get(joint + "torque_max_nm");
+  a.effort_nm = get(joint + (spec.prismatic ? "force_max_n" : "torque_max_nm"));  // N on a slider
   // The law applies the joint's Coulomb + viscous friction beside the servo row.
-  a.damping_nm_s_per_rad = get(joint + "viscous_nm_s_per_rad");
-  a.friction_nm = get(joint + "friction_nm");
+  const std::vector<std::string> friction =
+      friction_parameter_names(spec, FrictionTerms::kSpeedOnly);
+  a.friction_nm = get(friction[0]);
+  a.damping_nm_s_per_rad = get(friction[1]);
 }
 
 }  // namespace

@@ -68,11 +68,27 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   return std::make_unique<BenchServoLaw>(bench, friction, get("motor.R_drift_per_s"));
 }
 
+// The XL330 bench (scenarios/robots/servo_pendulum).
+std::vector<ParameterDefault> defaults(const RobotModel&, std::size_t, const JointHints&) {
+  const std::string xl330 = "XL330 bench (scenarios/robots/servo_pendulum)";
+  return {{"bench.kp", 400.0, 1.0, 2000.0, xl330},
+          {"bench.error_gain", 0.0028774, 0.00284, 0.00292, xl330},
+          {"bench.max_duty", 1.0, 0.5, 1.0, xl330},
+          {"bench.supply_v", 7.4, 5.0, 13.0, xl330},
+          {"bench.Kt_nm_per_a", 0.6, 0.1, 3.0, xl330},
+          {"bench.R_ohm", 2.6, 1.0, 6.0, xl330},
+          {"bench.armature_kg_m2", 0.005, 1.0e-4, 0.05, xl330},
+          {"bench.mass_kg", 0.49, 0.01, 5.0, xl330},
+          {"bench.length_m", 0.1, 0.01, 0.5, xl330},
+          {"bench.torque_off_s", 1.0e9, 0.0, 1.0e9, xl330}};
+}
+
 }  // namespace
 
 ServoLawInfo bench_servo_law_info() {
   ServoLawInfo info{"bench", "the pendulum bench's voltage P servo (BAM eq. 12-13)", names, create};
   info.point_mass_arm = true;
+  info.init_defaults = defaults;
   return info;
 }
 

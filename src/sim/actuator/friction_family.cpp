@@ -1,6 +1,7 @@
 #include "motoflex/sim/actuator/friction_family.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "motoflex/core/error.hpp"
 
@@ -101,35 +102,9 @@ bool friction_reads_external_torque(const FrictionParams& params) {
          p.quad_external_per_nm != 0.0;
 }
 
-std::vector<std::string> friction_parameter_names(const std::string& joint, FrictionTerms terms) {
-  std::vector<std::string> names;
-  const std::size_t count = leaf_count(terms);
-  for (std::size_t i = 0; i < count; ++i) names.push_back("joint." + joint + "." + kLeaves[i]);
-  return names;
-}
+namespace {
 
-FrictionParams read_friction(const ParameterReader& get, const std::string& joint,
-                             FrictionTerms terms) {
-  const std::string prefix = "joint." + joint + ".";
-  FrictionParams f;
-  f.coulomb_nm = get(prefix + "friction_nm");
-  f.viscous_nm_s_per_rad = get(prefix + "viscous_nm_s_per_rad");
-  f.stribeck_nm = get(prefix + "stribeck_nm");
-  f.stribeck_velocity_rad_s = get(prefix + "stribeck_velocity_rad_s");
-  f.stribeck_exponent = get(prefix + "stribeck_exponent");
-  if (terms != FrictionTerms::kSpeedOnly) f.load_motor = get(prefix + "load_friction");
-  if (terms == FrictionTerms::kFamily) {
-    f.load_external = get(prefix + "load_friction_external");
-    f.load_stribeck_motor = get(prefix + "load_friction_stribeck");
-    f.load_stribeck_external = get(prefix + "load_friction_external_stribeck");
-    f.quad_motor_per_nm = get(prefix + "load_friction_quad_per_nm");
-    f.quad_external_per_nm = get(prefix + "load_friction_external_quad_per_nm");
-    const double model = get(prefix + "friction_model");
-    if (!(model >= 1.0 && model <= 6.0 && std::round(model) == model)) {
-      throw ModelError(prefix + "friction_model must be 1-6 (BAM's M1-M6)");
-    }
-    f.model = static_cast<FrictionModel>(static_cast<int>(model));
-  }
+void check_friction(const FrictionParams& f, const std::string& prefix) {
   for (const double coefficient :
        {f.coulomb_nm, f.viscous_nm_s_per_rad, f.stribeck_nm, f.load_motor, f.load_external,
         f.load_stribeck_motor, f.load_stribeck_external, f.quad_motor_per_nm,
@@ -142,7 +117,79 @@ FrictionParams read_friction(const ParameterReader& get, const std::string& join
     throw ModelError(prefix + "stribeck_velocity_rad_s and " + prefix +
                      "stribeck_exponent must be > 0");
   }
+}
+
+// A prismatic joint's force-like leaves in N and m (joint_units); the others are ratios.
+std::string leaf_name(const char* leaf, bool prismatic) {
+  static const std::pair<const char*, const char*> kSlider[] = {
+      {"friction_nm", "friction_n"},
+      {"viscous_nm_s_per_rad", "viscous_n_s_per_m"},
+      {"stribeck_nm", "stribeck_n"},
+      {"stribeck_velocity_rad_s", "stribeck_velocity_m_s"},
+      {"load_friction_quad_per_nm", "load_friction_quad_per_n"},
+      {"load_friction_external_quad_per_nm", "load_friction_external_quad_per_n"}};
+  if (prismatic) {
+    for (const auto& [hinge, slider] : kSlider) {
+      if (std::string(leaf) == hinge) return slider;
+    }
+  }
+  return leaf;
+}
+
+std::vector<std::string> names_of(const std::string& joint, bool prismatic, FrictionTerms terms) {
+  std::vector<std::string> names;
+  const std::size_t count = leaf_count(terms);
+  for (std::size_t i = 0; i < count; ++i) {
+    names.push_back("joint." + joint + "." + leaf_name(kLeaves[i], prismatic));
+  }
+  return names;
+}
+
+FrictionParams read_named(const ParameterReader& get, const std::string& joint, bool prismatic,
+                          FrictionTerms terms) {
+  const std::string prefix = "joint." + joint + ".";
+  const auto value = [&](const char* leaf) { return get(prefix + leaf_name(leaf, prismatic)); };
+  FrictionParams f;
+  f.coulomb_nm = value("friction_nm");
+  f.viscous_nm_s_per_rad = value("viscous_nm_s_per_rad");
+  f.stribeck_nm = value("stribeck_nm");
+  f.stribeck_velocity_rad_s = value("stribeck_velocity_rad_s");
+  f.stribeck_exponent = value("stribeck_exponent");
+  if (terms != FrictionTerms::kSpeedOnly) f.load_motor = value("load_friction");
+  if (terms == FrictionTerms::kFamily) {
+    f.load_external = value("load_friction_external");
+    f.load_stribeck_motor = value("load_friction_stribeck");
+    f.load_stribeck_external = value("load_friction_external_stribeck");
+    f.quad_motor_per_nm = value("load_friction_quad_per_nm");
+    f.quad_external_per_nm = value("load_friction_external_quad_per_nm");
+    const double model = value("friction_model");
+    if (!(model >= 1.0 && model <= 6.0 && std::round(model) == model)) {
+      throw ModelError(prefix + "friction_model must be 1-6 (BAM's M1-M6)");
+    }
+    f.model = static_cast<FrictionModel>(static_cast<int>(model));
+  }
+  check_friction(f, prefix);
   return f;
+}
+
+}  // namespace
+
+std::vector<std::string> friction_parameter_names(const std::string& joint, FrictionTerms terms) {
+  return names_of(joint, false, terms);
+}
+
+std::vector<std::string> friction_parameter_names(const ActuatorSpec& joint, FrictionTerms terms) {
+  return names_of(joint.name, joint.prismatic, terms);
+}
+
+FrictionParams read_friction(const ParameterReader& get, const std::string& joint,
+                             FrictionTerms terms) {
+  return read_named(get, joint, false, terms);
+}
+
+FrictionParams read_friction(const ParameterReader& get, const ActuatorSpec& joint,
+                             FrictionTerms terms) {
+  return read_named(get, joint.name, joint.prismatic, terms);
 }
 
 }  // namespace motoflex

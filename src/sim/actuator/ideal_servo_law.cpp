@@ -25,20 +25,39 @@ class IdealServoLaw final : public ServoLaw {
   double armature_kg_m2_;
 };
 
+// One robot-wide limit per kind of joint: a torque for hinges, a force for sliders.
+std::string limit_name(const RobotModel& model, std::size_t actuator) {
+  return model.actuators[actuator].prismatic ? "ideal.force_max_n" : "ideal.torque_max_nm";
+}
+
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
-  return {"ideal.torque_max_nm", armature_parameter_name(model.actuators[actuator].name)};
+  return {limit_name(model, actuator), armature_parameter_name(model.actuators[actuator].name)};
 }
 
 std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   return std::make_unique<IdealServoLaw>(
-      IdealServoParams{setup.get("ideal.torque_max_nm")}, setup.dt_s,
+      IdealServoParams{setup.get(limit_name(setup.model, setup.actuator))}, setup.dt_s,
       read_armature_kg_m2(setup.get, setup.model.actuators[setup.actuator].name));
+}
+
+// TITAN-VIII's and the Nao's reference runs use 100 and 20 N·m; a stiff reference servo
+// should not be the limit, so the larger.
+std::vector<ParameterDefault> defaults(const RobotModel& model, std::size_t actuator,
+                                       const JointHints&) {
+  if (model.actuators[actuator].prismatic) {
+    return {{"ideal.force_max_n", 1000.0, 10.0, 10000.0, "reference servo, 1 kN"}};
+  }
+  return {{"ideal.torque_max_nm", 100.0, 10.0, 1000.0, "TITAN-VIII reference runs"}};
 }
 
 }  // namespace
 
 ServoLawInfo ideal_servo_law_info() {
-  return {"ideal", "reaches the next commanded angle in one step, torque-limited", names, create};
+  ServoLawInfo info{"ideal", "reaches the next commanded angle in one step, torque-limited", names,
+                    create};
+  info.drives_prismatic = true;
+  info.init_defaults = defaults;
+  return info;
 }
 
 }  // namespace motoflex

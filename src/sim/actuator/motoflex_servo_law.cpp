@@ -130,12 +130,36 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   }
 }
 
+// The Nao's values (scenarios/robots/nao, MoToFlex's RE-Max 24 and its pitch gear B).
+std::vector<ParameterDefault> defaults(const RobotModel& model, std::size_t actuator,
+                                       const JointHints&) {
+  const std::string gear = "gear." + model.actuators[actuator].group + ".";
+  const std::string nao = "Nao (scenarios/robots/nao)";
+  return {{"pid.kp_v_per_rad", 319.47, 30.0, 3000.0, nao},
+          {"pid.ki_v_per_rad_s", 14.19, 0.1, 1000.0, nao},
+          {"pid.kd_v_s_per_rad", 0.1636, 0.001, 2.0, nao},
+          {"motor.supply_v", 21.6, 18.0, 25.2, nao},
+          {"motor.R_ohm", 6.44, 2.0, 20.0, nao},
+          {"motor.L_h", 3.09e-4, 3.0e-5, 3.0e-3, nao},
+          {"motor.Kt_nm_per_a", 0.0195, 0.008, 0.05, nao},
+          {"motor.stiffness", 0.7, 0.1, 1.0, nao},
+          {gear + "ratio", 130.85, 10.0, 1000.0, nao + ", gear B"},
+          {gear + "motor_viscous_nm_s_per_rad", 2.9675e-4, 2.9675e-5, 2.9675e-3, nao + ", gear B"},
+          {gear + "backlash_rad", 1.051e-5, 1.0e-7, 0.05, nao + ", gear B"},
+          {gear + "spring_nm_per_rad", 1.7995e+7, 1.0e+4, 1.7995e+8, nao + ", gear B"},
+          {gear + "mass_kg_m2", 1.1037e-3, 1.0e-4, 1.0e-2, nao + ", gear B"},
+          {gear + "viscous_nm_s_per_rad", 0.10897, 1.0e-3, 1000.0, nao + ", gear B"}};
+}
+
 }  // namespace
 
 ServoLawInfo motoflex_servo_law_info() {
-  return {"motoflex",
-          "seed 001: PID -> DC motor -> gear train (backlash, spring) -> joint, dry friction",
-          names, create};
+  ServoLawInfo info{"motoflex",
+                    "seed 001: PID -> DC motor -> gear train (backlash, spring) -> joint, dry "
+                    "friction",
+                    names, create};
+  info.init_defaults = defaults;
+  return info;
 }
 
 }  // namespace motoflex

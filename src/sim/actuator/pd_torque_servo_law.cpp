@@ -6,6 +6,8 @@
 // The torque is explicit: stable while kd·h/(I + J) < 2 and kp·h² /(I + J) small (the rollout
 // ends a diverging candidate as a model failure).
 
+#include <cmath>
+
 #include "motoflex/core/error.hpp"
 #include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
@@ -73,6 +75,28 @@ std::vector<ParameterSpec> defaults(const RobotModel& model, std::size_t actuato
           spec("torque_max_nm", 5.0, 0.01, 500.0), spec("no_load_speed_rad_s", 0.0, 0.0, 100.0)};
 }
 
+// For a robot folder from a URDF (init-robot): the generic values, unless the URDF states the
+// joint's effort: then the torque limit is that effort and kp gives it at 0.1 rad of error (a
+// 20 N·m hobby leg joint gets 200 N·m/rad), so a robot stands under its own weight; the
+// velocity limit becomes the no-load speed of the torque-speed curve.
+std::vector<ParameterDefault> init_defaults(const RobotModel& model, std::size_t actuator,
+                                            const JointHints& hints) {
+  std::vector<ParameterDefault> out;
+  const std::string law = "servo 'pd_torque' default";
+  for (const ParameterSpec& spec : defaults(model, actuator)) {
+    out.push_back({spec.name, spec.default_value, spec.lower, spec.upper, law});
+  }
+  if (std::isfinite(hints.effort) && hints.effort > 0.0) {
+    const double effort = hints.effort;
+    out[0] = {out[0].name, 10.0 * effort, 0.0, 1000.0 * effort, "URDF effort / 0.1 rad"};
+    out[2] = {out[2].name, effort, 0.1 * effort, 10.0 * effort, "URDF effort"};
+  }
+  if (std::isfinite(hints.velocity) && hints.velocity > 0.0) {
+    out[3] = {out[3].name, hints.velocity, 0.0, 10.0 * hints.velocity, "URDF velocity"};
+  }
+  return out;
+}
+
 std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   const ActuatorSpec& spec = setup.model.actuators[setup.actuator];
   const std::string prefix = servo_parameter_prefix(spec);
@@ -99,6 +123,7 @@ ServoLawInfo pd_torque_servo_law_info() {
                     "torque PD: clip(kp(q_d - q) - kd q', +-torque_max, torque-speed curve)", names,
                     create};
   info.default_parameters = defaults;
+  info.init_defaults = init_defaults;
   return info;
 }
 

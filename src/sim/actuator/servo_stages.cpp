@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/model/joint_units.hpp"
 
 namespace motoflex {
 
@@ -62,6 +63,30 @@ double read_armature_kg_m2(const ParameterReader& get, const std::string& joint)
   const double armature_kg_m2 = get(armature_parameter_name(joint));
   if (armature_kg_m2 < 0.0) throw ModelError(armature_parameter_name(joint) + " must be >= 0");
   return armature_kg_m2;
+}
+
+namespace {
+
+double finite_or(double value, double fallback) {
+  return std::isfinite(value) && value >= 0.0 ? value : fallback;
+}
+
+}  // namespace
+
+std::vector<ParameterDefault> joint_friction_defaults(const ActuatorSpec& joint,
+                                                      const JointHints& hints) {
+  const JointUnits u = joint_units(joint);
+  const double effort_share = std::isfinite(hints.effort) ? 0.5 * hints.effort : 0.0;
+  const auto entry = [&](const std::string& name, double hint, const char* what) {
+    const double start = finite_or(hint, 0.0);
+    const double upper = std::max({1.0, effort_share, 5.0 * start});
+    return ParameterDefault{name, start, 0.0, upper,
+                            std::isfinite(hint) && hint >= 0.0
+                                ? std::string("URDF <dynamics ") + what + ">"
+                                : std::string("none in the URDF: 0, up to max(1, effort/2)")};
+  };
+  return {entry(joint_parameter(joint, "friction", u.effort), hints.friction, "friction"),
+          entry(joint_parameter(joint, "viscous", u.damping), hints.damping, "damping")};
 }
 
 }  // namespace motoflex

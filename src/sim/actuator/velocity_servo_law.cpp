@@ -1,7 +1,10 @@
 // `servo: velocity` — seed 000's velocity-controlled joints: θ̇_d = −k_d(θ − θ_d) on the ODE
 // joint motor, whose force ODE limits to τ_max (Table I). The joint motor row is the servo, so
 // the joint's friction gets a second zero-velocity row beside it: both are solved together, so
-// friction shows only where the servo saturates (its stall torque moves by the friction).
+// friction shows only where the servo saturates (its stall torque moves by the friction). On a
+// prismatic joint the same law in m and N (force_max_n).
+
+#include <cmath>
 
 #include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
@@ -34,31 +37,49 @@ class VelocityServoLaw final : public ServoLaw {
   double armature_kg_m2_;
 };
 
+std::string limit_name(const ActuatorSpec& a) {
+  return "joint." + a.name + (a.prismatic ? ".force_max_n" : ".torque_max_nm");
+}
+
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
-  const std::string& name = model.actuators[actuator].name;
-  const std::string joint = "joint." + name + ".";
-  std::vector<std::string> out = {joint + "gain_per_s", joint + "torque_max_nm"};
-  for (auto& friction : friction_parameter_names(name, FrictionTerms::kSpeedOnly)) {
+  const ActuatorSpec& a = model.actuators[actuator];
+  std::vector<std::string> out = {"joint." + a.name + ".gain_per_s", limit_name(a)};
+  for (auto& friction : friction_parameter_names(a, FrictionTerms::kSpeedOnly)) {
     out.push_back(std::move(friction));
   }
-  out.push_back(armature_parameter_name(name));
+  out.push_back(armature_parameter_name(a.name));
   return out;
 }
 
 std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
-  const std::string& name = setup.model.actuators[setup.actuator].name;
-  const std::string joint = "joint." + name + ".";
+  const ActuatorSpec& a = setup.model.actuators[setup.actuator];
   return std::make_unique<VelocityServoLaw>(
-      VelocityServoParams{setup.get(joint + "gain_per_s"), setup.get(joint + "torque_max_nm")},
-      read_friction(setup.get, name, FrictionTerms::kSpeedOnly),
-      read_armature_kg_m2(setup.get, name));
+      VelocityServoParams{setup.get("joint." + a.name + ".gain_per_s"), setup.get(limit_name(a))},
+      read_friction(setup.get, a, FrictionTerms::kSpeedOnly),
+      read_armature_kg_m2(setup.get, a.name));
+}
+
+// Gains from TITAN-VIII (seed 000 Table I); the limit is the URDF's effort when it has one.
+std::vector<ParameterDefault> defaults(const RobotModel& model, std::size_t actuator,
+                                       const JointHints& hints) {
+  const ActuatorSpec& a = model.actuators[actuator];
+  ParameterDefault limit{limit_name(a), a.prismatic ? 100.0 : 10.0, a.prismatic ? 10.0 : 1.0,
+                         a.prismatic ? 1000.0 : 100.0, "no effort in the URDF"};
+  if (std::isfinite(hints.effort) && hints.effort > 0.0) {
+    limit = {limit.name, hints.effort, 0.1 * hints.effort, 10.0 * hints.effort, "URDF effort"};
+  }
+  return {{"joint." + a.name + ".gain_per_s", 4.0, 0.4, 40.0, "TITAN-VIII (seed 000 Table I)"},
+          limit};
 }
 
 }  // namespace
 
 ServoLawInfo velocity_servo_law_info() {
-  return {"velocity", "seed 000: joint motor at -k_d(q - q_d), limited to torque_max_nm", names,
-          create};
+  ServoLawInfo info{"velocity", "seed 000: joint motor at -k_d(q - q_d), limited to torque_max_nm",
+                    names, create};
+  info.drives_prismatic = true;
+  info.init_defaults = defaults;
+  return info;
 }
 
 }  // namespace motoflex

@@ -85,8 +85,8 @@ double TitanTorqueProbe::foot_clearance_m(TitanLeg leg) const {
   const Eigen::Vector3d& p = body.position_m;
   const Eigen::Matrix3d& R = body.R_WB;
   double lowest = std::numeric_limits<double>::infinity();
-  for (const BoxGeom& box : model_.bodies[static_cast<std::size_t>(b)].boxes) {
-    if (!box.is_foot) continue;
+  for (const CollisionShape& box : model_.bodies[static_cast<std::size_t>(b)].collisions) {
+    if (!box.is_foot || box.kind != ShapeKind::kBox) continue;
     for (int corner = 0; corner < 8; ++corner) {
       const Eigen::Vector3d local(((corner & 1) ? 0.5 : -0.5) * box.size_m.x(),
                                   ((corner & 2) ? 0.5 : -0.5) * box.size_m.y(),

@@ -84,4 +84,11 @@ std::vector<std::string> friction_parameter_names(const std::string& joint, Fric
 FrictionParams read_friction(const ParameterReader& get, const std::string& joint,
                              FrictionTerms terms);
 
+// The same for an actuated joint: a prismatic joint's force-like names are in N and m
+// (friction_n, viscous_n_s_per_m, stribeck_n, stribeck_velocity_m_s, *_quad_per_n), read into
+// the same fields (N for N·m, m/s for rad/s).
+std::vector<std::string> friction_parameter_names(const ActuatorSpec& joint, FrictionTerms terms);
+FrictionParams read_friction(const ParameterReader& get, const ActuatorSpec& joint,
+                             FrictionTerms terms);
+
 }  // namespace motoflex

@@ -98,6 +98,26 @@ struct ServoLawSetup {
   int gear_substeps = 1;  // gear sub-steps per physics step (laws with a gear train)
 };
 
+// What the URDF says about one actuated joint, for starting values (NaN where it says nothing
+// or only a placeholder; init-robot screens them). Units are the joint's: N·m or N, rad/s or
+// m/s, N·m·s/rad or N·s/m.
+struct JointHints {
+  double effort = std::numeric_limits<double>::quiet_NaN();    // <limit effort>
+  double velocity = std::numeric_limits<double>::quiet_NaN();  // <limit velocity>
+  double damping = std::numeric_limits<double>::quiet_NaN();   // <dynamics damping>
+  double friction = std::numeric_limits<double>::quiet_NaN();  // <dynamics friction>
+};
+
+// A parameter's starting value and search bounds for a new robot folder, and where they come
+// from (shown in init-robot's table of assumptions).
+struct ParameterDefault {
+  std::string name;
+  double value = 0.0;
+  double lower = 0.0;
+  double upper = 1.0;
+  std::string source;  // e.g. "URDF effort 3 N·m", "Nao (scenarios/robots/nao)"
+};
+
 // A servo law as the registry knows it.
 struct ServoLawInfo {
   std::string name;     // the scenario's `servo:` value
@@ -110,6 +130,14 @@ struct ServoLawInfo {
   // The pendulum bench: the first actuated joint's child is replaced by a point mass
   // (bench.mass_kg at bench.length_m along the arm, inertia bench.armature_kg_m2).
   bool point_mass_arm = false;
+  // Whether the law can drive a prismatic joint (its parameters then in m and N).
+  bool drives_prismatic = false;
+  // Starting value and bounds of every name `parameter_names` lists for one actuator (laws
+  // without it fall back on default_parameters, else init-robot flags each name). Names shared with
+  // other laws (joint friction, ...) may be left out: joint_friction_defaults (servo_stages.hpp)
+  // and the rollout's own table (robot_parameter_defaults.hpp) give them.
+  std::vector<ParameterDefault> (*init_defaults)(const RobotModel& model, std::size_t actuator,
+                                                 const JointHints& hints) = nullptr;
   // Default value and search bounds of the law's own parameters for one actuator (the
   // `servo.<scope>.*` names; joint.* names have theirs in the model's parameter catalog), for
   // robots that do not declare them. nullptr = the law has no defaults: the robot declares all.

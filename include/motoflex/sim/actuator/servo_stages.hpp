@@ -61,4 +61,10 @@ double read_armature_kg_m2(const ParameterReader& get, const std::string& joint)
 // Joint friction (a budget for a zero-velocity ODE motor, BAM's M1–M6) is in
 // friction_family.hpp.
 
+// Starting values of joint.<J>.friction and .viscous for a new robot folder: the URDF's
+// <dynamics friction damping> or 0, searched in [0, max(1, effort/2, 5·start)] (N·m or N;
+// N·m·s/rad or N·s/m) with effort the URDF's limit when it has one.
+std::vector<ParameterDefault> joint_friction_defaults(const ActuatorSpec& joint,
+                                                      const JointHints& hints);
+
 }  // namespace motoflex
