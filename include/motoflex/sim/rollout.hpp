@@ -40,10 +40,11 @@ struct RolloutOptions {
   int quickstep_iterations = 20;  // dWorldQuickStep only
   double quickstep_w = 1.3;       // dWorldQuickStep's SOR over-relaxation (ODE's default 1.3)
   FlexModel flex_model = FlexModel::kImplicit;
-  // Contact points per foot box and step (dCollide's limit). ODE's box-plane collider returns
-  // at most 4, so the 2011 program's 10 per pair (motoflex_2011.md §2.10) changes nothing for
-  // box feet on the ground plane.
-  int max_contacts_per_foot = 4;
+  // A cap on the contact points per foot shape and step, below each shape's own limit (box and
+  // cylinder 4, capsule 2, sphere 1, mesh 8); the default caps nothing. ODE's box-plane
+  // collider returns at most 4, so the 2011 program's 10 per pair (motoflex_2011.md §2.10)
+  // changes nothing for box feet on the ground plane.
+  int max_contacts_per_foot = 64;
   int gear_substeps = 100;  // gear sub-steps per physics step (motoflex servo)
   // Servo law of every actuator (servo_law.hpp registry); empty = each joint's own law as the
   // robot assigns it (actuator_servo_name).
