@@ -285,7 +285,15 @@ FitSummary FitSession::run() {
 FitConfig load_run_config(const std::string& run_dir, const FitOverrides& overrides) {
   const fs::path run_json = fs::path(run_dir) / "run.json";
   std::ifstream in(run_json);
-  if (!in) throw InputError(run_json.string(), 0, "", "not a fit run folder (no run.json)");
+  if (!in) {
+    // A fit stopped before it wrote run.json (killed, or the disk full) leaves its lock file.
+    const bool started = fs::exists(fs::path(run_dir) / ".motoflex.lock");
+    throw InputError(run_json.string(), 0, "",
+                     started ? "missing: the fit stopped before it wrote its run files; start it "
+                               "again with `motoflex fit CONFIG --out " +
+                                   run_dir + "`"
+                             : "not a fit run folder (no run.json)");
+  }
   nlohmann::json run;
   try {
     in >> run;

@@ -507,7 +507,8 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
     applied_torque_nm[i] = out.torque_nm;
     if (std::isfinite(out.torque_nm)) {
       const ActuatorSpec& spec = model.actuators[i];
-      (spec.axis == 1 ? joint_torque1 : joint_torque2)[spec.joint] += axis.sign * out.torque_nm;
+      const double explicit_nm = out.torque_nm + out.damping_offset_nm;
+      (spec.axis == 1 ? joint_torque1 : joint_torque2)[spec.joint] += axis.sign * explicit_nm;
     }
   }
   for (std::size_t j = 0; j < joints.size(); ++j) {

@@ -19,8 +19,9 @@ struct CommandResult {
 };
 
 // Runs `motoflex <arguments>`; with timeout_s > 0 under timeout(1), which ends a hang with exit
-// code 124.
-inline CommandResult run_motoflex_with_timeout(const std::string& arguments, int timeout_s) {
+// code 124; shell_setup (e.g. "ulimit -f 8") runs first in the same shell.
+inline CommandResult run_motoflex_with_timeout(const std::string& arguments, int timeout_s,
+                                               const std::string& shell_setup = "") {
   // ctest runs tests in parallel processes: one stderr file per process and call.
   static int calls = 0;
   const auto dir = std::filesystem::temp_directory_path() / "motoflex_cli_test";
@@ -29,8 +30,9 @@ inline CommandResult run_motoflex_with_timeout(const std::string& arguments, int
       dir / ("stderr_" + std::to_string(getpid()) + "_" + std::to_string(++calls) + ".txt");
   const std::string prefix =
       timeout_s > 0 ? "timeout -s KILL " + std::to_string(timeout_s) + " " : "";
+  const std::string setup = shell_setup.empty() ? "" : shell_setup + "; exec ";
   const std::string command =
-      prefix + std::string(MOTOFLEX_TEST_BINARY) + " " + arguments + " 2> " + err.string();
+      setup + prefix + std::string(MOTOFLEX_TEST_BINARY) + " " + arguments + " 2> " + err.string();
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;

@@ -1,7 +1,8 @@
 // `servo: dynamixel` on the pendulum bench against `servo: bench` (BAM's voltage P servo that
 // made reference_data/): with the bench's values mapped to the firmware's registers
 // (error_gain = (4096/2π)/(kp_divisor·885), max_duty = pwm_limit/885) and its armature moved
-// from the arm's body into the joint's inertia row, the two laws give the same trajectories; and
+// from the arm's body into the joint's inertia row, the two laws give the same trajectories up
+// to the dynamixel law's implicit integration of the back-EMF (an O(h) difference); and
 // on the real XL330 logs of ../shared/data/bam (skipped when absent) they reach the same error.
 
 #include <gtest/gtest.h>
@@ -52,9 +53,10 @@ void map_bench_to_dynamixel(ParameterSet& p) {
 }
 
 RolloutResult replay(const ParameterSet& p, const std::string& law,
-                     const CommandTrajectory& commands) {
+                     const CommandTrajectory& commands, double dt_s = 1e-3) {
   RolloutOptions options;
   options.servo = law;
+  options.dt_s = dt_s;
   return run_rollout(pendulum(), p, commands, options);
 }
 
@@ -91,13 +93,22 @@ TEST(DynamixelBenchTest, DynamixelReproducesTheBenchLawsTrajectories) {
         p.set("bench.R_ohm", 4.0);
         p.set("bench.armature_kg_m2", 0.0018);
         map_bench_to_dynamixel(p);
-        const double worst =
-            max_difference(replay(p, "bench", commands), replay(p, "dynamixel", commands));
+        const auto worst_at = [&](double dt_s) {
+          return max_difference(replay(p, "bench", commands, dt_s),
+                                replay(p, "dynamixel", commands, dt_s));
+        };
+        const double worst_1ms = worst_at(1e-3), worst_half_ms = worst_at(5e-4);
         std::printf(
             "[ bench    ] kp %4.0f, max duty %.1f, off at %.0e s: max |q_dynamixel − "
-            "q_bench| %.2e rad\n",
-            kp, max_duty, torque_off_s, worst);
-        EXPECT_LT(worst, 1e-11);  // rounding only: measured ≤ 1.6e-12 rad
+            "q_bench| %.2e rad (1 ms), %.2e rad (0.5 ms)\n",
+            kp, max_duty, torque_off_s, worst_1ms, worst_half_ms);
+        // The laws differ only in how the back-EMF term is integrated (dynamixel: implicitly,
+        // bench: explicitly), an O(h) difference: measured ≤ 6.4e-3 rad at 1 ms (before the
+        // dynamixel law's implicit row, ≤ 1.6e-12 rad), and halving h halves it. A mapping error
+        // (a wrong divisor or gain) would not shrink with h.
+        EXPECT_LT(worst_1ms, 0.015);
+        EXPECT_GT(worst_half_ms, 0.3 * worst_1ms);
+        EXPECT_LT(worst_half_ms, 0.7 * worst_1ms);
       }
     }
   }
@@ -157,10 +168,11 @@ TEST(DynamixelBenchTest, RealXL330LogsAsWellAsTheBenchLaw) {
       "RMS bench %.4f mrad, dynamixel %.4f mrad; |goal - measured| %.2f mrad\n",
       files.size(), samples, mae_bench, mae_dynamixel, 1e3 * std::sqrt(square_sum[0] / n),
       1e3 * std::sqrt(square_sum[1] / n), mae_goal);
-  // The same model in two forms: the same error to rounding.
+  // The same model in two forms, integrated differently (implicit vs explicit back-EMF): the
+  // same error to 1 %.
   std::printf("[ XL330    ] |MAE dynamixel - MAE bench| %.2e mrad\n",
               std::abs(mae_dynamixel - mae_bench));
-  EXPECT_NEAR(mae_dynamixel, mae_bench, 1e-10);  // measured 5.7e-12 mrad
+  EXPECT_NEAR(mae_dynamixel, mae_bench, 0.01 * mae_bench);  // measured 0.23 mrad of 96.0
   // And a model of the servo, not a copy of the goal: with BAM's M1 parameters (fitted by BAM on
   // other logs of this servo, without its q_offset) measured 96.0 mrad, where taking the goal for
   // the position scores 670 mrad.

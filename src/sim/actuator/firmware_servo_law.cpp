@@ -42,7 +42,10 @@ class FirmwareServoLaw final : public ServoLaw {
   FirmwareServoLaw(const FirmwareServoParams& p, double dt_s)
       : params_(p),
         firmware_(p.firmware, dt_s),
-        external_(friction_reads_external_torque(p.friction)) {}
+        external_(friction_reads_external_torque(p.friction)),
+        back_emf_damping_nm_s_per_rad_(p.motor.gear_ratio * p.motor.gear_ratio *
+                                       p.motor.torque_constant_nm_per_a *
+                                       p.motor.torque_constant_nm_per_a / p.motor.resistance_ohm) {}
 
   ServoOutput step(const ServoInput& in) override {
     ServoOutput out;
@@ -58,8 +61,14 @@ class FirmwareServoLaw final : public ServoLaw {
       current_a_ = 0.0;
     }
     out.row = joint_friction(params_.friction, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
+    // The back-EMF term −N²K_t²/R·θ̇ of the motor torque acts through the implicit damping row at
+    // the end-of-step rate: explicitly it diverges on a light link (c·h/I > 2: c = 0.4 N·m·s/rad,
+    // h = 1 ms, I < 2e-4 kg·m², a small arm's wrist). Inside a current limit or with the
+    // H-bridge released the offset cancels the row, as the physics wants (no back-EMF torque).
+    out.damping_offset_nm = back_emf_damping_nm_s_per_rad_ * in.rate_rad_s;
     return out;
   }
+  double damping_row_nm_s_per_rad() const override { return back_emf_damping_nm_s_per_rad_; }
   double current_a() const override { return current_a_; }
   double armature_kg_m2() const override { return params_.armature_kg_m2; }
   bool needs_external_torque() const override { return external_; }
@@ -68,6 +77,7 @@ class FirmwareServoLaw final : public ServoLaw {
   FirmwareServoParams params_;
   PositionFirmware firmware_;
   bool external_;
+  double back_emf_damping_nm_s_per_rad_;  // N²·K_t²/R
   double current_a_ = 0.0;
 };
 

@@ -52,6 +52,12 @@ struct ServoOutput {
   // Joint friction for a law whose `row` drives the joint (has_friction_row()): a second,
   // zero-velocity row on the axis with this budget.
   MotorCommand friction_row;
+  // For a law with an implicit damping row (damping_row_nm_s_per_rad() = c > 0) whose torque_nm
+  // already contains that damping evaluated at the start-of-step rate, −c·θ̇₀ (a DC motor's
+  // back-EMF term inside a current limit): the explicit torque +c·θ̇₀ that the rollout adds to
+  // cancel it, so the damping acts through the row at the end-of-step rate instead. Applied:
+  // torque_nm + c·θ̇₀ − c·θ̇₁, stable for any c·h/I; reported: torque_nm. 0 for other laws.
+  double damping_offset_nm = 0.0;
 };
 
 // One actuator's servo in one rollout.
