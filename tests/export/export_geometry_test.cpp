@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sdf/Geometry.hh>
 #include <sdf/Link.hh>
 #include <sdf/Mesh.hh>
 #include <sdf/Model.hh>
@@ -147,14 +149,21 @@ TEST(ExportGeometry, DaeVisualIsConvertedToAnStlMujocoReadsAtItsSize) {
   const ModelPtr m = load_from_disk(path);
   ASSERT_TRUE(m);
   ASSERT_EQ(m->nmesh, 1);
-  for (int axis = 0; axis < 3; ++axis) {
-    float lo = 1e9f, hi = -1e9f;
-    for (int v = m->mesh_vertadr[0]; v < m->mesh_vertadr[0] + m->mesh_vertnum[0]; ++v) {
-      lo = std::min(lo, m->mesh_vert[3 * v + axis]);
-      hi = std::max(hi, m->mesh_vert[3 * v + axis]);
+  // MuJoCo turns a mesh onto its principal axes (any for a cube), so the size is checked by
+  // the longest vertex distance: the cube's space diagonal, 0.1·√3 m.
+  const int first = m->mesh_vertadr[0];
+  double diagonal_m = 0.0;
+  for (int a = first; a < first + m->mesh_vertnum[0]; ++a) {
+    for (int b = first; b < a; ++b) {
+      double squared = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        const double d = m->mesh_vert[3 * a + k] - m->mesh_vert[3 * b + k];
+        squared += d * d;
+      }
+      diagonal_m = std::max(diagonal_m, std::sqrt(squared));
     }
-    EXPECT_NEAR(hi - lo, 0.1, 1e-6) << axis;  // 100 mm, in metres (float STL)
   }
+  EXPECT_NEAR(diagonal_m, 0.1 * std::sqrt(3.0), 1e-6);  // measured: equal to 2e-9 (float STL)
 }
 
 }  // namespace
