@@ -67,7 +67,8 @@ nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
           {"mujoco_steps_per_s", c.mujoco_steps_per_s},
           {"motoflex_steps_per_s", c.motoflex_steps_per_s},
           {"motoflex_end", c.motoflex_end},
-          {"geoms", c.geoms}};
+          {"geoms", c.geoms},
+          {"visual_geoms", c.visual_geoms}};
 }
 
 const Exporter& check_arguments(const ExportArgs& args) {

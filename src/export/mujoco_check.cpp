@@ -129,6 +129,7 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
   out.motoflex_end = to_string(rollout.end());
   out.mujoco_version = mj_versionString();
   out.geoms = static_cast<std::size_t>(m->ngeom);
+  for (int g = 0; g < m->ngeom; ++g) out.visual_geoms += m->geom_group[g] == 1 ? 1 : 0;
   out.rms_deg_per_joint.assign(n, 0.0);
   constexpr double kDeg = 180.0 / M_PI;
   double total = 0.0;
