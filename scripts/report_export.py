@@ -12,7 +12,8 @@ the 10 s validation excitation log with the truth's parameters: rigid links and 
 the full MoToFlex servo; the full servo with 2 flexible sub-bodies per thigh and tibia; the Nao
 walking on the ground (validation walk, 50 mm steps of 1 s) with ideal and MoToFlex servos; the
 TITAN-VIII crawling on the ground (crawl A, 3 periods, velocity servos; log recorded here with
-`motoflex record`); the mesh-described mini_arm on the walk-through's chirp (recorded here).
+`motoflex record`); the mesh-described mini_arm on the walk-through's chirp (recorded here); the
+2011 Nao model (nao_motoflex_2011) held, on the validation excitation recorded for it here.
 
 Usage: report_export.py [--binary build/motoflex] [--repeats 3] [--out runs/export_report]
 Writes OUT/export_report.md and OUT/export_report.json.
@@ -101,6 +102,10 @@ def main():
     arm_log = record(args.binary, args.out, "mini_arm_chirp",
                      file_text(os.path.join(robots, "mini_arm/walkthrough/chirp.yaml"),
                                "robot: my_arm", os.path.join(robots, "mini_arm")))
+    nao_2011_log = record(args.binary, args.out, "nao_2011_excitation_held",
+                          file_text(os.path.join(ROOT, "scenarios/nao/excitation_held.yaml"),
+                                    "robot: ../robots/nao\n",
+                                    os.path.join(robots, "nao_motoflex_2011") + "\n"))
     models = [
         ("servo pendulum, bench servo", pendulum_params, "servo_pendulum", "bench", 1,
          pendulum_log, False, 0.0),
@@ -115,6 +120,8 @@ def main():
          walk_log, False, 0.5),
         ("TITAN-VIII crawling on the ground, velocity servo", pendulum_params, "titan8",
          "velocity", 1, titan_log, False, 0.5),
+        ("Nao 2011 model held, full MoToFlex servo", pendulum_params, "nao_motoflex_2011",
+         "motoflex", 1, nao_2011_log, True, 0.5),
         ("mini_arm (STL meshes), Feetech servo, chirp", pendulum_params, "mini_arm", "feetech", 1,
          arm_log, False, 0.0),
     ]
