@@ -58,15 +58,13 @@ py::dict export_file(const ExportRequest& request) {
     input.provenance = read_fitted_parameters(request.parameters, model.name, input.parameters);
     ExportOptions options;
     options.armature = request.armature;
-    const std::string text = exporter->write(input, options);
-    const std::string complaint = exporter->read_back_errors(text);
+    const ExportedFile file = exporter->write(input, options);
+    const std::string complaint = exporter->read_back_errors(file);
     reader = exporter->reader_name();
     if (!complaint.empty()) {
       throw ModelError(reader + " rejects the " + request.format + " export: " + complaint);
     }
-    const fs::path out_dir = fs::path(request.out).parent_path();
-    if (!out_dir.empty()) fs::create_directories(out_dir);
-    write_file_atomically(request.out, text);
+    write_exported_file(file, request.out);
   }
   py::dict out;
   out["format"] = request.format;

@@ -1,10 +1,12 @@
 // motoflex export <best.json> --robot DIR --format json|urdf|sdf|mjcf --out FILE
 //                 [--servo KIND] [--flex-sub-bodies N] [--dt S]
 //                 [--check-mujoco LOG.csv [--hold-torso] [--settle S] [--duration S]]
+//                 [--render PNG]
 // Writes a fitted parameter set in another simulator's format, reads the file back with that
 // format's own parser (urdfdom, sdformat, MuJoCo) and prints one JSON line. With
 // --check-mujoco (mjcf only) it also replays LOG's commanded angles in motoflex (ODE) and in
-// MuJoCo on the export and adds the angle RMS and both simulators' steps/s to that line.
+// MuJoCo on the export and adds the angle RMS and both simulators' steps/s to that line. With
+// --render (mjcf only) MuJoCo draws the export offscreen (OSMesa) into a PNG.
 
 #include <cmath>
 #include <cstdio>
@@ -19,6 +21,7 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/export/exporter.hpp"
 #include "motoflex/export/mujoco_check.hpp"
+#include "motoflex/export/mujoco_render.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/motion/log_commands.hpp"
 #include "motoflex/sim/robot_parameter_check.hpp"
@@ -40,6 +43,7 @@ struct ExportArgs {
   double settle_s = 0.0;
   double duration_s = 0.0;
   bool no_armature = false;
+  std::string render_png;
 };
 
 // The log's commanded angles in model order, truncated to `duration_s` (0: all); its sidecar's
@@ -63,7 +67,8 @@ nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
           {"mujoco_steps_per_s", c.mujoco_steps_per_s},
           {"motoflex_steps_per_s", c.motoflex_steps_per_s},
           {"motoflex_end", c.motoflex_end},
-          {"geoms", c.geoms}};
+          {"geoms", c.geoms},
+          {"visual_geoms", c.visual_geoms}};
 }
 
 const Exporter& check_arguments(const ExportArgs& args) {
@@ -73,6 +78,9 @@ const Exporter& check_arguments(const ExportArgs& args) {
   }
   if (!args.check_log.empty() && args.format != "mjcf") {
     throw InputError("", 0, "--check-mujoco", "needs --format mjcf");
+  }
+  if (!args.render_png.empty() && args.format != "mjcf") {
+    throw InputError("", 0, "--render", "needs --format mjcf");
   }
   if (!(args.dt_s > 0.0 && args.dt_s <= 0.01)) {
     throw InputError("", 0, "--dt", "must be in (0, 0.01] s");
@@ -85,16 +93,15 @@ const Exporter& check_arguments(const ExportArgs& args) {
   return *exporter;
 }
 
-// Writes the file (atomically) and returns what its parser complained about ("" = accepted).
+// Writes the file (atomically) with its meshes and returns what its parser complained about
+// ("" = accepted).
 std::string write_checked_file(const Exporter& exporter, const ExportInput& input,
-                               const ExportArgs& args) {
+                               const ExportArgs& args, ExportedFile& file) {
   ExportOptions options;
   options.armature = !args.no_armature;
-  const std::string text = exporter.write(input, options);
-  const std::string complaint = exporter.read_back_errors(text);
-  const std::filesystem::path out_dir = std::filesystem::path(args.out).parent_path();
-  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
-  write_file_atomically(args.out, text);
+  file = exporter.write(input, options);
+  const std::string complaint = exporter.read_back_errors(file);
+  write_exported_file(file, args.out);
   return complaint;
 }
 
@@ -121,8 +128,9 @@ int run(const ExportArgs& args) {
   }
 
   std::string parser_complaint;
+  ExportedFile file;
   try {
-    parser_complaint = write_checked_file(exporter, input, args);
+    parser_complaint = write_checked_file(exporter, input, args, file);
   } catch (const ModelError& error) {
     std::fprintf(stderr, "motoflex: cannot export: %s\n", error.what());
     return 1;
@@ -142,6 +150,16 @@ int run(const ExportArgs& args) {
   summary["parameters"] = args.parameters;
   summary["read_back_by"] = exporter.reader_name();
   if (!log_parameters.empty()) summary["log_parameters"] = log_parameters;
+  summary["meshes"] = file.assets.size();
+  if (!args.render_png.empty()) {
+    try {
+      write_png(render_mjcf(file), args.render_png);
+    } catch (const ModelError& error) {
+      std::fprintf(stderr, "motoflex: cannot render the export: %s\n", error.what());
+      return 1;
+    }
+    summary["render"] = args.render_png;
+  }
   if (!args.check_log.empty()) {
     MujocoCheckOptions options;
     options.settle_s = args.settle_s;
@@ -190,6 +208,8 @@ CommandRunner add_export_command(CLI::App& app) {
       ->check(non_negative_seconds());
   sub->add_option("--duration", args->duration_s, "check: only the first S seconds of the log")
       ->check(positive_seconds());
+  sub->add_option("--render", args->render_png,
+                  "mjcf: draw the export with MuJoCo's offscreen renderer (OSMesa) into this PNG");
   sub->add_flag("--no-armature", args->no_armature,
                 "mjcf: leave the armature out (motoflex's ODE joints have none)");
   return [args] { return run(*args); };

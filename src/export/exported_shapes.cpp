@@ -2,7 +2,7 @@
 
 namespace motoflex::detail {
 
-void add_sdf_geometry(XmlElement& parent, const ShapeGeometry& shape) {
+void add_sdf_geometry(XmlElement& parent, const ShapeGeometry& shape, const std::string& mesh_uri) {
   XmlElement& geometry = parent.child("geometry");
   switch (shape.kind) {
     case ShapeKind::kBox:
@@ -21,8 +21,7 @@ void add_sdf_geometry(XmlElement& parent, const ShapeGeometry& shape) {
     }
     case ShapeKind::kMesh: {
       XmlElement& mesh = geometry.child("mesh");
-      mesh.text_child("uri",
-                      shape.mesh.path.empty() ? shape.mesh.uri : "file://" + shape.mesh.path);
+      mesh.text_child("uri", mesh_uri.empty() ? shape.mesh.uri : mesh_uri);
       mesh.text_child("scale", format_vector(shape.mesh.scale));
       return;
     }
@@ -48,6 +47,14 @@ void set_mjcf_geom(XmlElement& geom, const ShapeGeometry& shape, const std::stri
   }
 }
 
+void add_mjcf_visual_mesh_asset(XmlElement& asset, const VisualShape& shape,
+                                const std::string& file, const std::string& name) {
+  asset.child("mesh")
+      .attribute("name", name)
+      .attribute("file", file)
+      .attribute("scale", format_vector(shape.mesh.scale));
+}
+
 void add_mjcf_mesh_asset(XmlElement& asset, const CollisionShape& shape, const std::string& name) {
   const std::vector<double>& xyz = shape.hull ? shape.hull->points_m : shape.trimesh->vertices_m;
   asset.child("mesh").attribute("name", name).attribute("vertex", format_numbers(xyz));
@@ -55,6 +62,15 @@ void add_mjcf_mesh_asset(XmlElement& asset, const CollisionShape& shape, const s
 
 std::string shape_geom_name(const CollisionShape& shape, std::size_t k) {
   return shape.link + "_" + to_string(shape.kind) + std::to_string(k);
+}
+
+std::string visual_geom_name(const std::string& body, const VisualShape& shape, std::size_t k) {
+  return body + "_visual_" + to_string(shape.kind) + std::to_string(k);
+}
+
+std::string visual_rgba(const VisualShape& shape) {
+  const Eigen::Vector4d rgba = shape.rgba ? *shape.rgba : Eigen::Vector4d(0.75, 0.75, 0.78, 1.0);
+  return format_numbers({rgba[0], rgba[1], rgba[2], rgba[3]});
 }
 
 }  // namespace motoflex::detail

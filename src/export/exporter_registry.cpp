@@ -10,34 +10,44 @@
 namespace motoflex {
 namespace {
 
-std::string write_json(const ExportInput& input, const ExportOptions&) {
-  return export_json(input);
+ExportedFile write_json(const ExportInput& input, const ExportOptions&) {
+  return {export_json(input), {}};
 }
-std::string json_errors(const std::string& text) {
-  return nlohmann::json::accept(text) ? "" : "not valid JSON";
+std::string json_errors(const ExportedFile& file) {
+  return nlohmann::json::accept(file.text) ? "" : "not valid JSON";
 }
 std::string json_reader() {
   return "nlohmann::json";
 }
 
-std::string write_urdf(const ExportInput& input, const ExportOptions&) {
-  return export_urdf(input);
+ExportedFile write_urdf(const ExportInput& input, const ExportOptions&) {
+  return {export_urdf(input), {}};
+}
+std::string urdf_errors(const ExportedFile& file) {
+  return urdfdom_errors(file.text);
 }
 std::string urdf_reader() {
   return parser_name("urdf");
 }
 
-std::string write_sdf(const ExportInput& input, const ExportOptions&) {
-  return export_sdf(input);
+ExportedFile write_sdf(const ExportInput& input, const ExportOptions&) {
+  return {export_sdf(input), mesh_assets(input.model)};
+}
+// sdformat keeps mesh URIs as written (Gazebo resolves them next to the file).
+std::string sdf_errors(const ExportedFile& file) {
+  return sdformat_errors(file.text);
 }
 std::string sdf_reader() {
   return parser_name("sdf");
 }
 
-std::string write_mjcf(const ExportInput& input, const ExportOptions& options) {
+ExportedFile write_mjcf(const ExportInput& input, const ExportOptions& options) {
   MjcfOptions mjcf;
   mjcf.armature = options.armature;
-  return export_mjcf(input, mjcf);
+  return {export_mjcf(input, mjcf), mesh_assets(input.model)};
+}
+std::string mjcf_errors(const ExportedFile& file) {
+  return mujoco_errors(file.text, file.assets);
 }
 std::string mjcf_reader() {
   return parser_name("mjcf");
@@ -50,11 +60,11 @@ const std::vector<Exporter>& exporters() {
       {"json", "every parameter and the joint-level actuator values", write_json, json_errors,
        json_reader},
       {"urdf", "the robot's URDF with fitted joint dynamics and transmissions", write_urdf,
-       urdfdom_errors, urdf_reader},
-      {"sdf", "SDFormat 1.9 (Gazebo) with fitted joint dynamics", write_sdf, sdformat_errors,
+       urdf_errors, urdf_reader},
+      {"sdf", "SDFormat 1.9 (Gazebo) with fitted joint dynamics", write_sdf, sdf_errors,
        sdf_reader},
-      {"mjcf", "MuJoCo with position actuators standing in for the servos", write_mjcf,
-       mujoco_errors, mjcf_reader},
+      {"mjcf", "MuJoCo with position actuators standing in for the servos", write_mjcf, mjcf_errors,
+       mjcf_reader},
   };
   return list;
 }

@@ -5,8 +5,10 @@
 
 #include "exported_bodies.hpp"
 #include "exported_shapes.hpp"
+#include "exported_visuals.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/export/actuator_export.hpp"
+#include "motoflex/export/exported_file.hpp"
 #include "xml_writer.hpp"
 
 namespace motoflex {
@@ -29,6 +31,7 @@ struct Writer {
   std::vector<ActuatorExport> actuators;
   FlexExport flex;
   std::vector<ExportedBody> bodies;
+  std::vector<std::vector<VisualShape>> visuals;       // body → what a viewer draws
   std::vector<std::vector<int>> children;              // body → child bodies
   Eigen::Vector3d offset_m = Eigen::Vector3d::Zero();  // placement of the whole robot
   std::string contact_solref;                          // of the feet and the floor
@@ -64,6 +67,24 @@ struct Writer {
         .attribute("frictionloss", flex.friction_nm);
   }
 
+  // Visual geoms: drawn (group 1, shown by default), never colliding, no mass (the compiler
+  // takes inertias from <inertial> only, inertiafromgeom="false"; mass 0 says so again).
+  void add_visual_geoms(XmlElement& element, int b) const {
+    const std::string& body = bodies[b].spec->name;
+    for (std::size_t k = 0; k < visuals[b].size(); ++k) {
+      const VisualShape& shape = visuals[b][k];
+      XmlElement& geom = element.child("geom");
+      const std::string name = detail::visual_geom_name(body, shape, k);
+      geom.attribute("name", name);
+      detail::set_mjcf_geom(geom, shape, "mesh_" + name);
+      geom.attribute("pos", format_vector(shape.X_BG.translation()));
+      geom.attribute("quat", detail::format_quaternion_wxyz(shape.X_BG.linear()));
+      geom.attribute("contype", "0").attribute("conaffinity", "0").attribute("group", "1");
+      geom.attribute("mass", "0").attribute("rgba", detail::visual_rgba(shape));
+    }
+  }
+
+  // Collision geoms in group 3 (hidden by MuJoCo's viewer by default; the visuals show them).
   void add_geoms(XmlElement& element, const ExportedBody& body) const {
     for (std::size_t k = 0; k < body.spec->collisions.size(); ++k) {
       const CollisionShape& shape = body.spec->collisions[k];
@@ -71,8 +92,10 @@ struct Writer {
       const std::string name = detail::shape_geom_name(shape, k);
       geom.attribute("name", name);
       detail::set_mjcf_geom(geom, shape, "mesh_" + name);
-      geom.attribute("pos", format_vector(shape.X_BG.translation()));
-      geom.attribute("quat", detail::format_quaternion_wxyz(shape.X_BG.linear()));
+      const Eigen::Isometry3d pose = detail::exported_shape_pose(body, shape.X_BG, offset_m);
+      geom.attribute("pos", format_vector(pose.translation()));
+      geom.attribute("quat", detail::format_quaternion_wxyz(pose.linear()));
+      geom.attribute("group", "3").attribute("rgba", "0.9 0.45 0.2 0.5");
       // Only feet and contact links touch the ground (floor: contype 0, conaffinity 1);
       // nothing else collides.
       const bool touches = shape.contact != GroundContact::kFall;
@@ -123,6 +146,7 @@ struct Writer {
         .attribute("fullinertia",
                    format_numbers({I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}));
     add_geoms(element, body);
+    add_visual_geoms(element, b);
     for (const int c : children[b]) add_body(element, c, body.com_m);
   }
 
@@ -147,11 +171,38 @@ std::pair<double, double> contact_solref(const ExportInput& input, std::size_t f
   return {timeconst, dampratio};
 }
 
+// Mesh collisions as inline assets (MuJoCo collides their convex hulls, as motoflex does); mesh
+// visuals as the exported mesh files next to the MJCF file.
+void add_mesh_assets(XmlElement& mujoco, const Writer& w) {
+  const RobotModel& model = w.input.model;
+  XmlElement* asset = nullptr;
+  auto assets = [&]() -> XmlElement& {
+    if (asset == nullptr) asset = &mujoco.child("asset");
+    return *asset;
+  };
+  for (const auto& body : model.bodies) {
+    for (std::size_t k = 0; k < body.collisions.size(); ++k) {
+      const CollisionShape& shape = body.collisions[k];
+      if (shape.kind != ShapeKind::kMesh) continue;
+      detail::add_mjcf_mesh_asset(assets(), shape, "mesh_" + detail::shape_geom_name(shape, k));
+    }
+  }
+  for (std::size_t b = 0; b < w.visuals.size(); ++b) {
+    for (std::size_t k = 0; k < w.visuals[b].size(); ++k) {
+      const VisualShape& shape = w.visuals[b][k];
+      if (shape.kind != ShapeKind::kMesh) continue;
+      detail::add_mjcf_visual_mesh_asset(
+          assets(), shape, mesh_asset_file(model, shape.mesh.path),
+          "mesh_" + detail::visual_geom_name(w.bodies[b].spec->name, shape, k));
+    }
+  }
+}
+
 }  // namespace
 
 std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
   const RobotModel& model = input.model;
-  Writer w{input, options, export_actuators(input), export_flex(input), {}, {}, {}, {}};
+  Writer w{input, options, export_actuators(input), export_flex(input), {}, {}, {}, {}, {}};
   std::vector<double> pose = options.placement_pose_rad;
   if (pose.empty()) pose.assign(model.actuators.size(), 0.0);
   w.offset_m = detail::placement_offset_m(
@@ -180,21 +231,10 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
       .attribute("integrator", "implicit")
       .attribute("cone", "pyramidal");
 
-  // Mesh collisions as inline assets (MuJoCo collides their convex hulls, as motoflex does).
-  bool has_meshes = false;
-  for (const auto& body : model.bodies) {
-    for (const auto& shape : body.collisions) has_meshes |= shape.kind == ShapeKind::kMesh;
+  for (const ExportedBody& body : w.bodies) {
+    w.visuals.push_back(detail::exported_visuals(model, body, w.offset_m));
   }
-  if (has_meshes) {
-    XmlElement& asset = mujoco.child("asset");
-    for (const auto& body : model.bodies) {
-      for (std::size_t k = 0; k < body.collisions.size(); ++k) {
-        const CollisionShape& shape = body.collisions[k];
-        if (shape.kind != ShapeKind::kMesh) continue;
-        detail::add_mjcf_mesh_asset(asset, shape, "mesh_" + detail::shape_geom_name(shape, k));
-      }
-    }
-  }
+  add_mesh_assets(mujoco, w);
   XmlElement& world = mujoco.child("worldbody");
   std::size_t foot_boxes = 0;
   for (const auto& body : model.bodies) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/export/exported_file.hpp"
 #include "motoflex/export/mjcf_export.hpp"
 #include "motoflex/export/servo_export.hpp"
 #include "motoflex/sim/rollout.hpp"
@@ -87,7 +88,8 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
   mjcf.clearance_m = options.hold_torso ? kHeldTorsoClearance_m : -1.0;
   mjcf.armature = options.armature;
   std::string error;
-  const detail::MjModelPtr m = detail::load_mjcf_text(export_mjcf(input, mjcf), error);
+  const detail::MjModelPtr m =
+      detail::load_mjcf_text(export_mjcf(input, mjcf), mesh_assets(model), error);
   if (!m) throw ModelError("MuJoCo cannot load the exported model: " + error);
   const detail::MjDataPtr d(mj_makeData(m.get()));
   std::vector<int> qpos(n), actuator(n);
@@ -127,6 +129,7 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
   out.motoflex_end = to_string(rollout.end());
   out.mujoco_version = mj_versionString();
   out.geoms = static_cast<std::size_t>(m->ngeom);
+  for (int g = 0; g < m->ngeom; ++g) out.visual_geoms += m->geom_group[g] == 1 ? 1 : 0;
   out.rms_deg_per_joint.assign(n, 0.0);
   constexpr double kDeg = 180.0 / M_PI;
   double total = 0.0;

@@ -45,9 +45,9 @@ std::string sdformat_errors(const std::string& sdf_text) {
   return out;
 }
 
-std::string mujoco_errors(const std::string& mjcf_text) {
+std::string mujoco_errors(const std::string& mjcf_text, const std::vector<ExportedAsset>& assets) {
   std::string error;
-  const detail::MjModelPtr model = detail::load_mjcf_text(mjcf_text, error);
+  const detail::MjModelPtr model = detail::load_mjcf_text(mjcf_text, assets, error);
   if (!model && error.empty()) return "MuJoCo rejected the model";
   return error;
 }

@@ -4,8 +4,10 @@
 
 #include "exported_bodies.hpp"
 #include "exported_shapes.hpp"
+#include "exported_visuals.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/export/actuator_export.hpp"
+#include "motoflex/export/exported_file.hpp"
 #include "motoflex/export/servo_export.hpp"
 #include "motoflex/export/urdf_export.hpp"
 #include "xml_writer.hpp"
@@ -68,7 +70,14 @@ void add_ground(XmlElement& world, const ExportInput& input) {
   add_surface(collision, input.parameters);
 }
 
-void add_link(XmlElement& model, const ExportedBody& body, const ParameterSet& p) {
+// The exported mesh file a mesh shape refers to ("" for primitives and unresolved meshes).
+std::string mesh_uri(const RobotModel& robot, const ShapeGeometry& shape) {
+  if (shape.kind != ShapeKind::kMesh || shape.mesh.path.empty()) return "";
+  return mesh_asset_file(robot, shape.mesh.path);
+}
+
+void add_link(XmlElement& model, const ExportedBody& body, const ExportInput& input,
+              const Eigen::Vector3d& offset_m) {
   XmlElement& link = model.child("link");
   link.attribute("name", body.spec->name);
   link.text_child("pose", pose_text(body.com_m, Eigen::Matrix3d::Identity()));
@@ -87,18 +96,27 @@ void add_link(XmlElement& model, const ExportedBody& body, const ParameterSet& p
   inertia.text_child("iyy", I(1, 1));
   inertia.text_child("iyz", I(1, 2));
   inertia.text_child("izz", I(2, 2));
+  const RobotModel& robot = input.model;
   for (std::size_t k = 0; k < body.spec->collisions.size(); ++k) {
     const CollisionShape& shape = body.spec->collisions[k];
-    const std::string name = detail::shape_geom_name(shape, k);
-    for (const char* kind : {"collision", "visual"}) {
-      XmlElement& geom = link.child(kind);
-      geom.attribute("name", name);
-      geom.text_child("pose", pose_text(shape.X_BG.translation(), shape.X_BG.linear()));
-      detail::add_sdf_geometry(geom, shape);
-      if (shape.contact != GroundContact::kFall && std::string(kind) == "collision") {
-        add_surface(geom, p);
-      }
-    }
+    XmlElement& geom = link.child("collision");
+    geom.attribute("name", detail::shape_geom_name(shape, k));
+    const Eigen::Isometry3d pose = detail::exported_shape_pose(body, shape.X_BG, offset_m);
+    geom.text_child("pose", pose_text(pose.translation(), pose.linear()));
+    detail::add_sdf_geometry(geom, shape, mesh_uri(robot, shape));
+    if (shape.contact != GroundContact::kFall) add_surface(geom, input.parameters);
+  }
+  const std::vector<VisualShape> visuals = detail::exported_visuals(robot, body, offset_m);
+  for (std::size_t k = 0; k < visuals.size(); ++k) {
+    const VisualShape& shape = visuals[k];
+    XmlElement& geom = link.child("visual");
+    geom.attribute("name", detail::visual_geom_name(body.spec->name, shape, k));
+    geom.text_child("pose", pose_text(shape.X_BG.translation(), shape.X_BG.linear()));
+    detail::add_sdf_geometry(geom, shape, mesh_uri(robot, shape));
+    const std::string rgba = detail::visual_rgba(shape);
+    XmlElement& material = geom.child("material");
+    material.text_child("ambient", rgba);
+    material.text_child("diffuse", rgba);
   }
 }
 
@@ -224,7 +242,7 @@ std::string export_sdf(const ExportInput& input) {
 
   XmlElement& model = world.child("model");
   model.attribute("name", robot.name);
-  for (const ExportedBody& body : bodies) add_link(model, body, input.parameters);
+  for (const ExportedBody& body : bodies) add_link(model, body, input, offset);
   if (robot.fixed_base) {
     XmlElement& weld = model.child("joint");
     weld.attribute("name", robot.bodies[robot.root_body].name + "_to_world")

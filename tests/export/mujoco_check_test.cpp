@@ -59,7 +59,8 @@ TEST(MujocoCheck, HeldNaoWithIdealServosAgreesWithinOneDegree) {
       compare_with_mujoco(*f.input, five_seconds_of("nao/excitation_held.yaml"), options);
   print("held Nao, ideal servos", c);
   EXPECT_EQ(c.steps, 5000u);
-  EXPECT_EQ(c.geoms, 15u);      // the Nao's collision boxes and the floor
+  EXPECT_EQ(c.geoms, 29u);  // the Nao's 14 collision boxes, 14 visual boxes, the floor
+  EXPECT_EQ(c.visual_geoms, 14u);
   EXPECT_LT(c.rms_deg, 0.002);  // measured 0.0005 deg (max 0.0084)
   for (std::size_t j = 0; j < c.joints.size(); ++j) {
     EXPECT_LT(c.rms_deg_per_joint[j], 0.005) << c.joints[j];

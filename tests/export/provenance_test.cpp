@@ -17,9 +17,9 @@ namespace {
 std::string exported(const ExportInput& input, const std::string& format) {
   const Exporter* exporter = find_exporter(format);
   EXPECT_NE(exporter, nullptr);
-  const std::string text = exporter->write(input, {});
-  EXPECT_EQ(exporter->read_back_errors(text), "") << format;
-  return text;
+  const ExportedFile file = exporter->write(input, {});
+  EXPECT_EQ(exporter->read_back_errors(file), "") << format;
+  return file.text;
 }
 
 TEST(ExportProvenance, EveryFormatNamesTheRunTheDataAndTheIntervals) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "motoflex/export/export_input.hpp"
+#include "motoflex/export/exported_file.hpp"
 
 namespace motoflex {
 
@@ -18,10 +19,12 @@ struct ExportOptions {
 struct Exporter {
   std::string format;       // --format value, e.g. "mjcf"
   std::string description;  // one line for help texts
-  // Writes the file's text. Throws ModelError when the parameters cannot be exported.
-  std::string (*write)(const ExportInput& input, const ExportOptions& options);
-  // The format's own parser reads the text back: its complaints, or "" when it accepts it.
-  std::string (*read_back_errors)(const std::string& text);
+  // Writes the file's text and the mesh files it refers to (SDF, MJCF). Throws ModelError when
+  // the parameters cannot be exported.
+  ExportedFile (*write)(const ExportInput& input, const ExportOptions& options);
+  // The format's own parser reads the file (with its meshes) back: its complaints, or "" when
+  // it accepts it.
+  std::string (*read_back_errors)(const ExportedFile& file);
   // Who read it back, for reports ("MuJoCo 2.2.2").
   std::string (*reader_name)();
 };

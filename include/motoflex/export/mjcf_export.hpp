@@ -42,6 +42,11 @@ struct MjcfOptions {
 //    k = erp/(h·cfm), c = (1 − erp)/cfm; per contact point with the mass m = robot mass / foot
 //    contact points this is MuJoCo's solref (timeconst 2m/c, dampratio c/(2·√(k·m))), with the
 //    time constant raised to 2·dt where it is shorter (MuJoCo's own safety limit);
+//  * geometry: the collision shapes motoflex simulates (group 3, hidden in MuJoCo's viewer;
+//    mesh hulls inline) and visual geoms (group 1, contype = conaffinity = 0, mass 0) for what
+//    a viewer shows (exported_visuals.hpp: URDF visuals, else collision shapes, else a CoM
+//    sphere with rods to the joints); a mesh visual names its file relative to the MJCF file,
+//    "<robot>_meshes/<file>", which mesh_assets (exported_file.hpp) provides;
 //  * <custom>: every parameter as numeric "motoflex:<name>", and the provenance as text.
 // MuJoCo has no backlash: the gear's dead zone (gear.<G>.backlash_rad), its spring and small
 // mass are left out, so the exported joint is stiff where motoflex's has a play of l_h. MuJoCo's

@@ -26,7 +26,8 @@ struct MujocoComparison {
   double motoflex_steps_per_s = 0.0;      // wall-clock rate of Rollout::step (one thread)
   std::string motoflex_end;               // how the motoflex rollout ended ("completed", ...)
   std::string mujoco_version;
-  std::size_t geoms = 0;  // geoms of the exported model (0: nothing a viewer could show)
+  std::size_t geoms = 0;         // geoms of the exported model (collision, visual, floor)
+  std::size_t visual_geoms = 0;  // of those, the visual ones (group 1: what a viewer shows)
 };
 
 // Simulates the same commanded trajectory in motoflex (ODE, input.servo, dWorldStep) and in

@@ -1,6 +1,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "motoflex/export/exported_file.hpp"
 
 namespace motoflex {
 
@@ -13,7 +16,9 @@ std::string urdfdom_errors(const std::string& urdf_text);
 // libsdformat 12 (sdf::Root::LoadSdfString): every sdf::Error.
 std::string sdformat_errors(const std::string& sdf_text);
 // MuJoCo (mj_loadXML from an in-memory file): the error buffer, plus any compiler warning.
-std::string mujoco_errors(const std::string& mjcf_text);
+// `assets` are the mesh files the text refers to, given to MuJoCo's virtual file system.
+std::string mujoco_errors(const std::string& mjcf_text,
+                          const std::vector<ExportedAsset>& assets = {});
 
 // The parser and its version, for reports ("urdfdom 3.0", "sdformat 12.3.0", "MuJoCo 2.2.2").
 std::string parser_name(const std::string& format);

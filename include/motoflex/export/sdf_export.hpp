@@ -19,6 +19,8 @@ namespace motoflex {
 //    <limit lower upper effort velocity> from actuator_export.hpp; flexible-link axes carry
 //    flex.spring_nm_per_rad as spring_stiffness (spring_reference 0), flex damping and friction,
 //    integrated implicitly (<physics><ode><implicit_spring_damper>) as motoflex does;
+//  * per link its <collision> shapes and <visual> shapes as the MJCF export draws them, meshes
+//    by a URI relative to the SDF file ("<robot>_meshes/<file>", see mesh_assets);
 //  * <motoflex:servo> per actuated joint (ignored by SDF consumers): the linearised servo
 //    gains, armature and gear ratio.
 // Lost: armature (SDF has no element; only in <motoflex:servo>), the servo law itself, backlash
