@@ -72,6 +72,9 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
   options.linear_solver_type = ceres::DENSE_QR;
   options.max_num_iterations = static_cast<int>(config.polish.max_iterations);
   options.num_threads = 1;  // the Jacobian's rollouts are the parallel part
+  // No projected line search at the bounds: each of its steps would cost a Jacobian (2p
+  // rollout sets); the trust region alone stays within them.
+  options.max_num_line_search_step_size_iterations = 0;
   options.logging_type = ceres::SILENT;
   options.minimizer_progress_to_stdout = false;
   ceres::Solver::Summary summary;
