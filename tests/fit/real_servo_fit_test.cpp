@@ -39,7 +39,7 @@ TEST(RealServoFitTest, Sts3250ConfigFitsTheRealLogsWithIntervals) {
   // The goal itself as the prediction: RMS of (goal − measured) over the imported logs.
   double goal_square = 0.0;
   std::size_t frames = 0;
-  for (const auto& entry : fs::directory_iterator(dir / "run" / "imported")) {
+  for (const auto& entry : fs::directory_iterator(dir / "run" / "imported" / "train")) {
     if (entry.path().extension() != ".csv") continue;
     const JointLog log = read_joint_log(entry.path().string(), JointLogRequirements{});
     for (std::size_t f = 0; f < log.frames(); ++f) {
@@ -52,8 +52,9 @@ TEST(RealServoFitTest, Sts3250ConfigFitsTheRealLogsWithIntervals) {
   const double goal_rms_deg = std::sqrt(goal_square / static_cast<double>(frames)) * 180.0 / M_PI;
   std::printf("[ STS3250  ] train RMS %.3f deg (goal as prediction: %.3f deg), %s\n",
               summary.train_rms_deg, goal_rms_deg, summary.brief_report().c_str());
-  // A model of the servo, not a copy of the goal: measured 2.0 deg against 13.9 deg.
-  EXPECT_LT(summary.train_rms_deg, 0.5 * goal_rms_deg);
+  // A model of the servo, not a copy of the goal (lift_and_drop's released arm falls far from
+  // it): measured 1.39 deg against 48.8 deg.
+  EXPECT_LT(summary.train_rms_deg, 0.1 * goal_rms_deg);
   ASSERT_TRUE(json.contains("confidence_intervals"));
   EXPECT_EQ(json["confidence_intervals"].size(), 6u);
   for (const auto& [name, interval] : json["confidence_intervals"].items()) {
