@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fit_test_support.hpp"
+#include "motoflex/core/error.hpp"
 #include "motoflex/fit/parameter_covariance.hpp"
 
 namespace motoflex {
@@ -121,6 +122,25 @@ TEST(FitLmPolishTest, LmRecoversTheTruthAndItsIntervalsCoverIt) {
   // The report prints the intervals.
   EXPECT_NE(summary.full_report().find("95 % interval"), std::string::npos);
   EXPECT_NE(summary.brief_report().find("0 of 4 parameters unidentified"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(FitLmPolishTest, ThePolishSectionIsCheckedAndRoundTrips) {
+  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_spec";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {method: gauss}\n")), InputError);
+  EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {max_iterations: 0}\n")), InputError);
+  EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {jacobian_step: 0.5}\n")), InputError);
+  const FitSpec spec =
+      load_fit_spec(write_fit(dir, dir, "polish: {max_iterations: 7, covariance: false}\n"));
+  EXPECT_TRUE(spec.polish.lm());  // method defaults to lm inside the section
+  EXPECT_EQ(spec.polish.max_iterations, 7u);
+  EXPECT_FALSE(spec.polish.reports_uncertainty());
+  const auto json = fit_spec_to_json(spec);
+  EXPECT_EQ(json["polish"]["method"], "lm");
+  EXPECT_EQ(json["polish"]["max_iterations"], 7);
+  EXPECT_FALSE(fit_spec_to_json(load_fit_spec(write_fit(dir, dir, ""))).contains("polish"));
   fs::remove_all(dir);
 }
 
