@@ -198,6 +198,7 @@ def nao_rows(binary, work, threads):
     """nao_quick (reference_data/nao, a known truth) with and without the LM polish."""
     import yaml
     rows = []
+    os.makedirs(work, exist_ok=True)
     base = os.path.join(ROOT, "scenarios", "fit", "nao_quick.yaml")
     for polish in (False, True):
         with open(base) as f:
