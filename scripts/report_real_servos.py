@@ -194,8 +194,9 @@ def loop_row(binary, servo, train, val, work, threads):
     }
 
 
-def nao_rows(binary, work, threads):
-    """nao_quick (reference_data/nao, a known truth) with and without the LM polish."""
+def nao_rows(binary, work, threads, generations=0, lm_iterations=10):
+    """nao_quick (reference_data/nao, a known truth) with and without the LM polish
+    (`generations` > 0 replaces its budget by that many generations)."""
     import yaml
     rows = []
     os.makedirs(work, exist_ok=True)
@@ -208,8 +209,10 @@ def nao_rows(binary, work, threads):
         out = os.path.join(work, "nao_quick" + ("_lm" if polish else ""))
         shutil.rmtree(out, ignore_errors=True)
         fit["out"] = out
+        if generations > 0:
+            fit["budget"] = {"generations": generations}
         if polish:
-            fit["polish"] = {"method": "lm", "max_iterations": 10}
+            fit["polish"] = {"method": "lm", "max_iterations": lm_iterations}
         path = out + ".yaml"
         with open(path, "w") as f:
             yaml.safe_dump(fit, f, sort_keys=False)
@@ -218,8 +221,7 @@ def nao_rows(binary, work, threads):
             s = json.load(f)
         rows.append({"fit": "nao_quick" + (" + LM" if polish else ""),
                      "evaluations": s["evaluations"], "best_fitness": s["best_fitness"],
-                     "train_rms_deg": s["rms_deg"]["all"] if isinstance(s["rms_deg"], dict)
-                     and "all" in s["rms_deg"] else s["rms_deg"],
+                     "train_rms_deg": s["rms_deg"].get("overall"),
                      "polish": s.get("polish"), "wall_seconds": seconds})
         print(rows[-1], flush=True)
     return rows
@@ -251,10 +253,14 @@ def markdown(rows, nao, args):
             r["wall_seconds"]))
     lines += ["", "Splits: " + "; ".join("%s: %s" % (k, v["split"]) for k, v in SERVOS.items())]
     if nao:
-        lines += ["", "| fit | evaluations | best fitness | wall (s) |", "|---|---|---|---|"]
+        lines += ["", "nao_quick (reference_data/nao, recorded from a known truth)%s:" % (
+            " with %d generations" % args.nao_generations if args.nao_generations else ""), "",
+                  "| fit | evaluations | best fitness | train RMS (deg) | wall (s) |",
+                  "|---|---|---|---|---|"]
         for r in nao:
-            lines.append("| %s | %d | %.6g | %.0f |" % (r["fit"], r["evaluations"],
-                                                       r["best_fitness"], r["wall_seconds"]))
+            lines.append("| %s | %d | %.6g | %s | %.0f |" % (
+                r["fit"], r["evaluations"], r["best_fitness"], number(r["train_rms_deg"], "%.4f"),
+                r["wall_seconds"]))
     return lines
 
 
@@ -270,6 +276,9 @@ def main():
     parser.add_argument("--no-loop", action="store_true")
     parser.add_argument("--no-lm", action="store_true", help="skip the M1 + LM rows")
     parser.add_argument("--nao", action="store_true", help="also nao_quick with/without LM")
+    parser.add_argument("--nao-generations", type=int, default=0,
+                        help="nao_quick's budget in generations (0: its own)")
+    parser.add_argument("--nao-lm-iterations", type=int, default=10)
     args = parser.parse_args()
     if not os.path.isdir(BAM):
         print("BAM logs absent (%s): nothing to report" % BAM)
@@ -290,7 +299,8 @@ def main():
         if not args.no_loop:
             rows.append(loop_row(args.binary, servo, train, val, work, args.threads))
             print(rows[-1], flush=True)
-    nao = nao_rows(args.binary, args.out, args.threads) if args.nao else []
+    nao = nao_rows(args.binary, args.out, args.threads, args.nao_generations,
+                   args.nao_lm_iterations) if args.nao else []
     os.makedirs(args.results, exist_ok=True)
     document = {"git": git_hash(), "date": time.strftime("%Y-%m-%dT%H:%M:%S"),
                 "threads": args.threads, "budget": "400 + 80 per free parameter, x %g" % args.scale,
