@@ -51,6 +51,14 @@ void bind_strategy(py::module_& m) {
       .def("to_dict", [](const StrategyConfig& s) {
         return py::module_::import("json").attr("loads")(strategy_to_json(s).dump());
       });
+  py::class_<PolishSpec>(m, "PolishSpec",
+                         "The `polish:` section: Levenberg-Marquardt after the strategy "
+                         "(method 'lm'), and the covariance / 95 % intervals.")
+      .def(py::init<>())
+      .def_readwrite("method", &PolishSpec::method)
+      .def_readwrite("max_iterations", &PolishSpec::max_iterations)
+      .def_readwrite("jacobian_step", &PolishSpec::jacobian_step)
+      .def_readwrite("covariance", &PolishSpec::covariance);
   py::class_<FitBudget>(m, "FitBudget", "The `budget:` section (0 = no limit).")
       .def(py::init<>())
       .def_readwrite("max_generations", &FitBudget::max_generations)
@@ -138,6 +146,7 @@ void bind_fit_spec(py::module_& m) {
       .def_readwrite("early_termination", &FitSpec::early_termination)
       .def_readwrite("strategy", &FitSpec::strategy)
       .def_readwrite("budget", &FitSpec::budget)
+      .def_readwrite("polish", &FitSpec::polish)
       .def_readwrite("threads", &FitSpec::threads)
       .def_readwrite("seed", &FitSpec::seed)
       .def_readwrite("out_dir", &FitSpec::out_dir)

@@ -48,6 +48,9 @@ void add_intervals(const std::string& best_path, std::vector<ProvenanceFitted>& 
     const nlohmann::json& i = intervals[f.name];
     if (i.is_object() && i.contains("lower") && i["lower"].is_number()) f.lower = i["lower"];
     if (i.is_object() && i.contains("upper") && i["upper"].is_number()) f.upper = i["upper"];
+    if (i.is_object() && i.contains("identified") && i["identified"].is_boolean()) {
+      f.identified = i["identified"].get<bool>();
+    }
     if (i.is_array() && i.size() == 2 && i[0].is_number() && i[1].is_number()) {
       f.lower = i[0];
       f.upper = i[1];
@@ -82,6 +85,7 @@ std::vector<std::string> provenance_lines(const FitProvenance& p, const std::str
     if (std::isfinite(f.lower) && std::isfinite(f.upper)) {
       text += " [" + number_text(f.lower) + ", " + number_text(f.upper) + "] (95 %)";
     }
+    if (!f.identified) text += " unidentified by the data";
     add("fitted", text);
   }
   return lines;

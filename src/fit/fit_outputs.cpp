@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "fit_sensitivity.hpp"
+#include "fit_uncertainty_outputs.hpp"
 #include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/core/text_hash.hpp"
@@ -134,6 +135,7 @@ FitSummary write_fit_outputs(const FitConfig& config, const FitProblem& problem,
     json["excitation_warnings"] = still;
   }
   if (!result.sensitivity.empty()) json["sensitivity"] = sensitivity_json(summary.parameters);
+  add_uncertainty_outputs(config, result, summary, json);
   summary.train_rms_deg = train.rms_deg;
   if (config.validation) {
     const DetailedEvaluation validation = evaluate_in_detail(*config.validation, best);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fit_lm_polish.hpp"
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/fit_problem.hpp"
 #include "motoflex/fit/fit_summary.hpp"
@@ -28,6 +29,10 @@ struct RunResult {
   // Per free coordinate: relative fitness change per bound-width (fit_sensitivity.hpp); empty
   // when not measured (an interrupted run).
   std::vector<double> sensitivity;
+  // The least-squares finish and the uncertainty (`polish:`), when asked for.
+  bool lm_ran = false;
+  LmPolishResult lm;
+  FitUncertainty uncertainty;
 };
 
 // Writes the outputs of a run into config.out_dir and returns its summary.

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "fit_lm_polish.hpp"
 #include "fit_outputs.hpp"
 #include "fit_run_dir.hpp"
 #include "fit_sensitivity.hpp"
@@ -231,6 +232,26 @@ void run_polish(const FitConfig& config, const motoflex_es::Strategy& strategy, 
   hooks.report(event);
 }
 
+// The `polish: {method: lm}` finish: kept only if it lowers the fitness.
+void run_lm_polish(const FitConfig& config, double seconds, const SessionHooks& hooks,
+                   detail::RunResult& result) {
+  result.lm = detail::lm_polish(config, result.best_x, result.best_fitness);
+  result.lm_ran = true;
+  result.polish_evaluations += result.lm.rollouts;
+  if (result.lm.used) {
+    result.best_x = result.lm.x;
+    result.best_fitness = result.lm.fitness_after;
+  }
+  FitProgress event;
+  event.polish = true;
+  event.polish_algorithm = "lm, " + std::to_string(result.lm.iterations) + " iterations, " +
+                           (result.lm.used ? "kept" : "not better");
+  event.evaluations = result.lm.rollouts;
+  event.best_fitness = result.best_fitness;
+  event.seconds = seconds;
+  hooks.report(event);
+}
+
 }  // namespace
 
 FitSummary FitSession::run() {
@@ -271,6 +292,12 @@ FitSummary FitSession::run() {
   result.best_x = strategy->best_x();
   if (!s.should_stop() && !config.strategy.polish.empty() && !result.best_x.empty()) {
     run_polish(config, *strategy, problem, clock.now(), hooks, result);
+  }
+  if (!s.should_stop() && config.polish.lm() && !result.best_x.empty()) {
+    run_lm_polish(config, clock.now(), hooks, result);
+  }
+  if (!s.should_stop() && config.polish.reports_uncertainty() && !result.best_x.empty()) {
+    result.uncertainty = detail::fit_uncertainty(config, result.best_x);
   }
   if (!s.should_stop() && !result.best_x.empty()) {
     result.sensitivity = detail::fitness_sensitivity(problem, *evaluator, result.best_x);

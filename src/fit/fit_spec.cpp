@@ -68,6 +68,11 @@ bool FitSpec::is_valid(std::string* error) const {
   }
   if (!strategy_is_valid(strategy, "strategy", error)) return false;
   if (!strategy_is_valid(loop.refit_strategy, "loop.refit.strategy", error)) return false;
+  if (!one_of(polish.method, {"", "none", "lm"})) return fail(error, "polish.method: lm or none");
+  if (polish.max_iterations < 1) return fail(error, "polish.max_iterations: must be >= 1");
+  if (!(polish.jacobian_step > 0.0 && polish.jacobian_step <= 0.1)) {
+    return fail(error, "polish.jacobian_step: must be in (0, 0.1]");
+  }
   if (!(budget.max_seconds >= 0.0)) return fail(error, "budget.seconds: must be >= 0");
   if (loop.candidates < 1) return fail(error, "loop.candidates: must be >= 1");
   if (!(loop.min_gain >= 0.0 && loop.min_gain < 1.0)) {

@@ -162,6 +162,9 @@ void read_sections(const YamlValue& root, FitSpec& spec, ErrorCollector& errors)
     if (const auto budget = root.find("budget")) spec.budget = read_budget(*budget);
   });
   errors.check([&] {
+    if (const auto polish = root.find("polish")) spec.polish = read_polish(*polish);
+  });
+  errors.check([&] {
     if (const auto loop = root.find("loop")) spec.loop = read_loop(*loop);
   });
   read_run_settings(root, spec, errors);
@@ -173,7 +176,7 @@ FitSpec load_fit_spec(const std::string& path, const FitOverrides& overrides) {
   const YamlValue root = YamlValue::load_file(path);
   root.require_keys_within({"name", "scenario", "data", "logs", "validation", "free", "fixed",
                             "effects", "fitness", "strategy", "budget", "threads", "seed", "out",
-                            "loop"});
+                            "polish", "loop"});
   FitSpec spec;
   spec.path = fs::absolute(path).lexically_normal();
   spec.root = {path, root.line(), ""};

@@ -69,6 +69,22 @@ StrategyConfig read_strategy(const YamlValue& node) {
   return s;
 }
 
+PolishSpec read_polish(const YamlValue& node) {
+  node.require_keys_within({"method", "max_iterations", "jacobian_step", "covariance"});
+  PolishSpec p;
+  p.method = node.get_string("method", "lm");
+  if (p.method != "lm" && p.method != "none") node.at("method").fail("expected lm or none");
+  const int iterations = node.get_int("max_iterations", static_cast<int>(p.max_iterations));
+  if (iterations < 1) node.at("max_iterations").fail("must be >= 1");
+  p.max_iterations = static_cast<std::size_t>(iterations);
+  p.jacobian_step = node.get_double("jacobian_step", p.jacobian_step);
+  if (!(p.jacobian_step > 0.0 && p.jacobian_step <= 0.1)) {
+    node.at("jacobian_step").fail("must be in (0, 0.1] (a share of the bound width)");
+  }
+  p.covariance = node.get_bool("covariance", p.covariance);
+  return p;
+}
+
 LoopOptions read_loop(const YamlValue& node) {
   node.require_keys_within({"candidates", "max_iterations", "min_gain", "effects", "refit"});
   LoopOptions loop;

@@ -1,7 +1,7 @@
 #pragma once
 
-// Internal to the fit spec reader: the readers of fit.yaml's `strategy:`, `budget:` and `loop:`
-// sections (also the refit section of `loop:`).
+// Internal to the fit spec reader: the readers of fit.yaml's `strategy:`, `budget:`, `polish:` and
+// `loop:` sections (also the refit section of `loop:`).
 
 #include "motoflex/fit/fit_spec.hpp"
 #include "motoflex/io/yaml_reader.hpp"
@@ -10,6 +10,7 @@ namespace motoflex {
 
 StrategyConfig read_strategy(const YamlValue& node);
 FitBudget read_budget(const YamlValue& budget);
+PolishSpec read_polish(const YamlValue& node);
 LoopOptions read_loop(const YamlValue& node);
 
 }  // namespace motoflex

@@ -34,6 +34,13 @@ nlohmann::ordered_json budget_json(const FitBudget& budget) {
 
 }  // namespace
 
+nlohmann::ordered_json polish_to_json(const PolishSpec& p) {
+  return {{"method", p.method.empty() ? std::string("none") : p.method},
+          {"max_iterations", p.max_iterations},
+          {"jacobian_step", p.jacobian_step},
+          {"covariance", p.covariance}};
+}
+
 nlohmann::ordered_json strategy_to_json(const StrategyConfig& s) {
   return {{"kind", s.kind},
           {"mu", s.mu},
@@ -103,6 +110,7 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
   fit["fitness"] = fitness;
   fit["strategy"] = strategy_to_json(spec.strategy);
   fit["budget"] = budget_json(spec.budget);
+  if (!spec.polish.method.empty()) fit["polish"] = polish_to_json(spec.polish);
   fit["loop"] = {{"candidates", spec.loop.candidates},
                  {"max_iterations", spec.loop.max_iterations},
                  {"min_gain", spec.loop.min_gain},

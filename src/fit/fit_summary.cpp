@@ -27,6 +27,33 @@ double FittedParameter::bound_fraction() const {
   return (value - lower) / (upper - lower);
 }
 
+// The 95 % intervals and the strongest correlations (|r| > 0.9), when the fit computed them.
+std::string FitSummary::uncertainty_report(std::size_t width) const {
+  if (covariance.empty()) return "";
+  std::string out = "\n  " + pad("parameter", width) +
+                    "       fitted   std. error   95 % interval                 share of bounds\n";
+  std::string unidentified;
+  for (const auto& p : parameters) {
+    out += "  " + pad(p.name, width) + format(" %12.5g", p.value) +
+           format(" %12.3g", p.standard_error) + "   [" + format("%.5g", p.ci_lower) + ", " +
+           format("%.5g", p.ci_upper) + "]" + format("  %5.0f %%", 100.0 * p.ci_share_of_bounds) +
+           (p.unidentified() ? "  UNIDENTIFIED" : "") + "\n";
+    if (p.unidentified()) unidentified += (unidentified.empty() ? "" : ", ") + p.name;
+  }
+  if (!unidentified.empty()) {
+    out += "  unidentified (95 % interval spans > 50 % of the bounds): " + unidentified + "\n";
+  }
+  for (std::size_t a = 0; a < correlation.size(); ++a) {
+    for (std::size_t b = a + 1; b < correlation.size(); ++b) {
+      if (std::abs(correlation[a][b]) > 0.9) {
+        out += "  correlated: " + parameters[a].name + " / " + parameters[b].name +
+               format(" r = %.3f", correlation[a][b]) + "\n";
+      }
+    }
+  }
+  return out;
+}
+
 std::string FitSummary::brief_report() const {
   std::string line = name + ": " + stop_reason + (converged ? " (converged)" : " (not converged)");
   line += " after " + std::to_string(generations) + " generations, " + std::to_string(evaluations) +
@@ -34,6 +61,13 @@ std::string FitSummary::brief_report() const {
           format("%.3g", train_rms_deg) + " deg";
   if (validation_rms_deg >= 0.0) {
     line += ", validation RMS " + format("%.3g", validation_rms_deg) + " deg";
+  }
+  if (!covariance.empty()) {
+    const auto unidentified =
+        std::count_if(parameters.begin(), parameters.end(),
+                      [](const FittedParameter& p) { return p.unidentified(); });
+    line += ", " + std::to_string(unidentified) + " of " + std::to_string(parameters.size()) +
+            " parameters unidentified";
   }
   return line + " (" + format("%.1f", seconds) + " s)";
 }
@@ -44,7 +78,12 @@ std::string FitSummary::full_report() const {
   out += "  evaluator  " + evaluator + "\n";
   out += "  " + convergence + "\n";
   if (polish_evaluations > 0) {
-    out += "  polish     " + std::to_string(polish_evaluations) + " evaluations\n";
+    out += "  polish     " + std::to_string(polish_evaluations) + " evaluations";
+    if (polish_method == "lm") {
+      out += ", Levenberg-Marquardt: fitness " + format("%.6g", fitness_before_polish) +
+             (polish_used ? " -> " + format("%.6g", best_fitness) : std::string(" (not lowered)"));
+    }
+    out += "\n";
   }
   std::size_t width = 10;
   for (const auto& p : parameters) width = std::max(width, p.name.size());
@@ -67,6 +106,7 @@ std::string FitSummary::full_report() const {
     out += "  the training data cannot determine: " + undetermined +
            " (a 1 % step in its range moves the fitness by < 0.1 %)\n";
   }
+  out += uncertainty_report(width);
   if (details.contains("robots")) {
     out += "\n  training logs: fitness, frames simulated / requested, end, RMS (deg)\n";
     for (const auto& robot : details["robots"]) {

@@ -79,10 +79,11 @@ TEST(ServoLawRegistryTest, FrictionAndArmatureEffectsApplyWhereTheLawsReadThem) 
   EXPECT_TRUE(applies("armature", "ideal"));
   for (const char* effect :
        {"directional_load_friction", "load_stribeck_friction", "quadratic_load_friction"}) {
-    for (const char* law : {"pd_torque", "dynamixel", "feetech"}) {
+    // bench reads BAM's whole family (M1-M6) like the firmware laws.
+    for (const char* law : {"pd_torque", "dynamixel", "feetech", "bench"}) {
       EXPECT_TRUE(applies(effect, law)) << effect << " " << law;
     }
-    for (const char* law : {"velocity", "bench", "motoflex", "ideal"}) {
+    for (const char* law : {"velocity", "motoflex", "ideal"}) {
       EXPECT_FALSE(applies(effect, law)) << effect << " " << law;
     }
   }

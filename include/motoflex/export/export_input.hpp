@@ -25,6 +25,8 @@ struct ProvenanceFitted {
   double value = 0.0;
   double lower = std::numeric_limits<double>::quiet_NaN();
   double upper = std::numeric_limits<double>::quiet_NaN();
+  // false when the fit flagged it unidentified (its interval spans most of its bounds)
+  bool identified = true;
 };
 
 // Where a fitted parameter set came from: best.json's "fitness", "free" and "provenance"

@@ -50,6 +50,8 @@ nlohmann::json overrides_to_json(const FitOverrides& overrides);
 FitOverrides overrides_from_json(const nlohmann::json& json);
 // Every field of a strategy, as the `strategy:` section of a fit config reads it back.
 nlohmann::ordered_json strategy_to_json(const StrategyConfig& strategy);
+// The `polish:` section as fit.yaml reads it back.
+nlohmann::ordered_json polish_to_json(const PolishSpec& polish);
 // A spec as fit.yaml reads it back (JSON is valid YAML), paths absolute.
 nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec);
 

@@ -25,6 +25,7 @@
 //   threads: 2
 //   seed: 1
 //   out: ../../runs/nao_quick
+//   polish: {method: lm, max_iterations: 20, jacobian_step: 1e-3, covariance: true}
 //   loop: {candidates: 3, max_iterations: 3, min_gain: 0.05, effects: [...],
 //          refit: {strategy: {kind: cma_es, sigma: 0.1}, budget: {evaluations: 240}}}
 
@@ -91,6 +92,22 @@ struct LoopOptions {
   }
 };
 
+// The optional least-squares finish after the strategy (the `polish:` section): Levenberg–
+// Marquardt (Ceres) on the residual vector √w_j (q_real − q_sim)/√(T^m) of every scored frame and
+// channel of the training logs (so its squared norm is the fitness), with a central finite-
+// difference Jacobian through the rollout in the strategy's search coordinates (log where
+// `log: true`), clamped to the bounds. Its result replaces the strategy's best only if it lowers
+// the fitness. With `covariance` the summary reports σ²(JᵀJ)⁻¹ at the best point (σ² = RSS/(N−p)),
+// 95 % confidence intervals and the correlation matrix (also without LM: `method: none`).
+struct PolishSpec {
+  std::string method;               // "" / "none": no LM; "lm": Levenberg–Marquardt
+  std::size_t max_iterations = 20;  // LM iterations (each: one Jacobian, 2p rollouts of all logs)
+  double jacobian_step = 1e-3;      // finite-difference step, share of each bound width
+  bool covariance = true;           // uncertainty at the best point (default on with lm)
+  bool lm() const { return method == "lm"; }
+  bool reports_uncertainty() const { return covariance && (lm() || method == "none"); }
+};
+
 // One `free:` entry: a model parameter name or pattern and how it is searched.
 struct FreeParameterSpec {
   std::string pattern;          // a name, or '*' within one dotted level, "**" across levels
@@ -142,6 +159,7 @@ struct FitSpec {
   bool early_termination = true;  // stop rollouts that cannot beat the selection threshold
   StrategyConfig strategy;
   FitBudget budget;
+  PolishSpec polish;  // default: none (nothing after the strategy)
   LoopOptions loop;
   int threads = 1;         // OpenMP threads (results do not depend on it)
   std::uint64_t seed = 1;  // every random number of the run derives from it

@@ -4,6 +4,7 @@
 // brief_report() is one line, full_report() the table a user reads, to_json() is summary.json.
 
 #include <cstdint>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -22,6 +23,16 @@ struct FittedParameter {
   // of the range; < 0: not measured). Below 0.1 the training data cannot determine the value.
   double sensitivity = -1.0;
   bool undetermined() const { return sensitivity >= 0.0 && sensitivity < 0.1; }
+  // 95 % confidence interval (model units) and standard error from σ²(JᵀJ)⁻¹ (`polish:` with
+  // covariance; NaN when not computed, ±inf when the data do not determine the parameter).
+  double standard_error = std::numeric_limits<double>::quiet_NaN();
+  double ci_lower = std::numeric_limits<double>::quiet_NaN();
+  double ci_upper = std::numeric_limits<double>::quiet_NaN();
+  // The share of [lower, upper] (search coordinates) the interval covers; NaN when not computed.
+  double ci_share_of_bounds = std::numeric_limits<double>::quiet_NaN();
+  // The interval spans most (> kUnidentifiedShare) of the bounds: the data do not identify it.
+  bool unidentified() const { return ci_share_of_bounds > kUnidentifiedShare; }
+  static constexpr double kUnidentifiedShare = 0.5;
   // Where the value sits between its bounds, 0…1 (log scale where searched so); a value at a
   // bound (< 1 % or > 99 %) usually means the bounds cut the optimum off.
   double bound_fraction() const;
@@ -43,6 +54,14 @@ struct FitSummary {
   std::uint64_t evaluations = 0;  // main strategy + polish
   std::uint64_t generations = 0;
   std::uint64_t polish_evaluations = 0;
+  // `polish: {method: lm}`: what LM did (fitness before → after, whether it was kept).
+  std::string polish_method;  // "" (none), "bobyqa", "sbplx", "lm"
+  double fitness_before_polish = std::numeric_limits<double>::quiet_NaN();
+  bool polish_used = false;
+  // σ²(JᵀJ)⁻¹ of the free parameters in model units (delta method on log-scale ones) and its
+  // correlation matrix; empty when not computed.
+  std::vector<std::vector<double>> covariance;
+  std::vector<std::vector<double>> correlation;
   double seconds = 0.0;  // wall time over all sessions of the run
   std::vector<FittedParameter> parameters;
   double train_rms_deg = 0.0;
@@ -61,6 +80,8 @@ struct FitSummary {
   // The brief line, then the parameter table (start, fitted, bounds, position in the bounds),
   // errors per log and the early-termination savings.
   std::string full_report() const;
+  // The confidence-interval table and the strongest correlations ("" without covariance).
+  std::string uncertainty_report(std::size_t name_width = 10) const;
 };
 
 }  // namespace motoflex

@@ -14,7 +14,10 @@ namespace {
 class BenchServoLaw final : public ServoLaw {
  public:
   BenchServoLaw(BenchServoParams params, FrictionParams friction, double drift_per_s)
-      : params_(params), friction_(friction), resistance_drift_per_s_(drift_per_s) {}
+      : params_(params),
+        friction_(friction),
+        resistance_drift_per_s_(drift_per_s),
+        external_(friction_reads_external_torque(friction)) {}
 
   ServoOutput step(const ServoInput& in) override {
     BenchServoParams bench = params_;
@@ -24,14 +27,18 @@ class BenchServoLaw final : public ServoLaw {
     ServoOutput out;
     out.torque_nm =
         bench_servo_torque_nm(bench, in.command_rad, in.angle_rad, in.rate_rad_s, enabled);
-    out.row = joint_friction(friction_, in.rate_rad_s, out.torque_nm);
+    out.row = joint_friction(friction_, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
     return out;
   }
+  // BAM's M3–M6 load terms read the gravity torque of the arm (τ_e); M1, M2 and the motor-load
+  // term alone do not, and then the rollout does not compute it.
+  bool needs_external_torque() const override { return external_; }
 
  private:
   BenchServoParams params_;
   FrictionParams friction_;
   double resistance_drift_per_s_;
+  bool external_;
 };
 
 const char* const kBenchNames[] = {
@@ -41,10 +48,12 @@ const char* const kBenchNames[] = {
 
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   std::vector<std::string> out(std::begin(kBenchNames), std::end(kBenchNames));
-  // The friction the bench always had (Coulomb, viscous, Stribeck, K_m·|τ_m|); the arm's point
-  // mass carries the armature (bench.armature_kg_m2), so joint.<J>.armature_kg_m2 is not read.
+  // BAM's friction family M1–M6 (friction_family.hpp; at the defaults, friction_model 6 with the
+  // external and quadratic coefficients 0, the Coulomb, viscous, Stribeck, K_m·|τ_m| budget the
+  // bench always had, bit for bit); the arm's point mass carries the armature
+  // (bench.armature_kg_m2), so joint.<J>.armature_kg_m2 is not read.
   for (auto& name :
-       friction_parameter_names(model.actuators[actuator].name, FrictionTerms::kMotorLoad)) {
+       friction_parameter_names(model.actuators[actuator].name, FrictionTerms::kFamily)) {
     out.push_back(std::move(name));
   }
   out.emplace_back("motor.R_drift_per_s");
@@ -64,7 +73,7 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   if (!(bench.resistance_ohm > 0.0)) throw ModelError("bench.R_ohm must be positive");
   if (bench.max_duty < 0.0) throw ModelError("bench.max_duty must not be negative");
   const FrictionParams friction =
-      read_friction(get, setup.model.actuators[setup.actuator].name, FrictionTerms::kMotorLoad);
+      read_friction(get, setup.model.actuators[setup.actuator].name, FrictionTerms::kFamily);
   return std::make_unique<BenchServoLaw>(bench, friction, get("motor.R_drift_per_s"));
 }
 

@@ -1,0 +1,317 @@
+#!/usr/bin/env python3
+"""BAM's model comparison on the real servo logs we have (../shared/data/bam): per friction model
+M1-M6 (BAM's family, `joint.pendulum.friction_model`, the bench's voltage P servo), fitted with
+`motoflex fit` on the training split, the train and held-out MAE (mrad); then M1 with the
+Levenberg-Marquardt polish (what LM adds over CMA-ES alone: evaluations and error) and the
+`motoflex loop` result, on the XL330 (BAM's split: kp 400 validates, kp 100 and 800 train) and
+the STS3250 (lift_and_drop and sin_time_square train, up_and_down validates).
+
+Usage: report_real_servos.py [--binary build/motoflex] [--out runs/real_servos]
+                             [--results benchmarks/real_servos] [--threads 2] [--scale 1.0]
+                             [--servos xl330,sts3250] [--models 1,2,3,4,5,6] [--no-loop]
+                             [--nao]   (also: nao_quick with and without LM)
+Writes RESULTS/real_servos.md and RESULTS/real_servos.json (git hash, date, budgets).
+"""
+import argparse
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BAM = os.path.join(ROOT, "..", "shared", "data", "bam")
+# BAM's published held-out MAE on this XL330 split (issue 19: its CMA-ES refit, 2 seeds x 4000
+# evaluations per model, measured outside this repository).
+BAM_PUBLISHED = {"xl330": {1: 55.7, 3: 33.0}}
+
+# BAM's search bounds (bam.md §2d, main): name -> (lower, upper, start).
+FRICTION = {
+    "joint.pendulum.friction_nm": (0.0, 0.2, 0.02),                   # K_c
+    "joint.pendulum.viscous_nm_s_per_rad": (0.0, 1.0, 0.02),          # K_v
+    "joint.pendulum.stribeck_nm": (0.0, 0.2, 0.01),                   # K_cs
+    "joint.pendulum.stribeck_velocity_rad_s": (0.1, 3.0, 1.0),        # v_s
+    "joint.pendulum.stribeck_exponent": (1.0, 10.0, 2.0),             # alpha
+    "joint.pendulum.load_friction": (0.0, 0.5, 0.05),                 # K_l / K_m
+    "joint.pendulum.load_friction_external": (0.0, 0.5, 0.05),        # K_e
+    "joint.pendulum.load_friction_stribeck": (0.0, 1.0, 0.05),        # K_ls / K_ms
+    "joint.pendulum.load_friction_external_stribeck": (0.0, 1.0, 0.05),  # K_es
+    "joint.pendulum.load_friction_quad_per_nm": (0.0, 0.01, 0.001),   # K_mq
+    "joint.pendulum.load_friction_external_quad_per_nm": (0.0, 0.01, 0.001),  # K_eq
+}
+M1 = ["friction_nm", "viscous_nm_s_per_rad"]
+STRIBECK = ["stribeck_nm", "stribeck_velocity_rad_s", "stribeck_exponent"]
+MODELS = {
+    1: M1,
+    2: M1 + STRIBECK,
+    3: M1 + ["load_friction"],
+    4: M1 + STRIBECK + ["load_friction", "load_friction_stribeck"],
+    5: M1 + STRIBECK + ["load_friction", "load_friction_external", "load_friction_stribeck",
+                        "load_friction_external_stribeck"],
+    6: M1 + STRIBECK + ["load_friction", "load_friction_external", "load_friction_stribeck",
+                        "load_friction_external_stribeck", "load_friction_quad_per_nm",
+                        "load_friction_external_quad_per_nm"],
+}
+SERVOS = {
+    "xl330": {
+        "config": "servo_pendulum_bam.yaml",
+        "split": "BAM's: kp 400 validates, kp 100 and 800 train (processed logs)",
+        # the servo's own free parameters (from the config), without its friction
+        "servo_free": ["bench.Kt_nm_per_a", "bench.R_ohm", "bench.armature_kg_m2"],
+    },
+    "sts3250": {
+        "config": "servo_pendulum_sts3250.yaml",
+        "split": "lift_and_drop and sin_time_square train, up_and_down validates (raw logs)",
+        "servo_free": ["bench.error_gain", "bench.Kt_nm_per_a", "bench.R_ohm",
+                       "bench.armature_kg_m2"],
+    },
+}
+
+
+def budget_of(dimension, scale):
+    """CMA-ES evaluations per fit: 400 + 80 per free parameter (x --scale)."""
+    return int(scale * (400 + 80 * dimension))
+
+
+def split_logs(servo, out):
+    train, val = os.path.join(out, "train"), os.path.join(out, "validation")
+    for d in (train, val):
+        shutil.rmtree(d, ignore_errors=True)
+        os.makedirs(d)
+    folder = os.path.join(BAM, "xl330", "processed") if servo == "xl330" else \
+        os.path.join(BAM, "sts3250", "raw")
+    for name in sorted(os.listdir(folder)):
+        if not name.endswith(".json"):
+            continue
+        with open(os.path.join(folder, name)) as f:
+            log = json.load(f)
+        held_out = log.get("kp") == 400 if servo == "xl330" else \
+            log.get("trajectory") == "up_and_down"
+        shutil.copy(os.path.join(folder, name), val if held_out else train)
+    return train, val
+
+
+def read_column(path, column):
+    with open(path) as f:
+        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))]
+    index = rows[0].index(column)
+    return [float(r[index]) for r in rows[1:]]
+
+
+def mae_mrad(simulated_dir, measured_dir):
+    """Mean |q_real - q_sim| over every frame of every log (the imported CSVs vs best/)."""
+    total, count = 0.0, 0
+    for name in sorted(os.listdir(measured_dir)):
+        if not name.endswith(".csv"):
+            continue
+        real = read_column(os.path.join(measured_dir, name), "pendulum.meas")
+        sim = read_column(os.path.join(simulated_dir, name), "pendulum.meas")
+        total += sum(abs(a - b) for a, b in zip(real, sim))
+        count += min(len(real), len(sim))
+    return 1e3 * total / count
+
+
+def write_model_fit(servo, model, train, val, out, evaluations, polish):
+    """The servo's config with friction model `model` and its BAM coefficients free."""
+    base = os.path.join(ROOT, "scenarios", "fit", SERVOS[servo]["config"])
+    import yaml  # python3-yaml (scripts/setup)
+    with open(base) as f:
+        fit = yaml.safe_load(f)
+    fit["name"] = "%s_m%d%s" % (servo, model, "_lm" if polish else "")
+    fit["scenario"] = os.path.normpath(os.path.join(os.path.dirname(base), fit["scenario"]))
+    fit["data"], fit["validation"], fit["out"] = train, val, out
+    free = {k: v for k, v in fit["free"].items() if k in SERVOS[servo]["servo_free"]}
+    for leaf in MODELS[model]:
+        name = "joint.pendulum." + leaf
+        lower, upper, start = FRICTION[name]
+        free[name] = {"lower": lower, "upper": upper, "start": start}
+    fit["free"] = free
+    fit["fixed"] = {"joint.pendulum.friction_model": model}
+    fit["budget"] = {"evaluations": evaluations}
+    fit.pop("loop", None)
+    if polish:
+        fit["polish"] = {"method": "lm", "max_iterations": 15}
+    path = os.path.join(os.path.dirname(out), fit["name"] + ".yaml")
+    with open(path, "w") as f:
+        yaml.safe_dump(fit, f, sort_keys=False)
+    return path, len(free)
+
+
+def run_fit(binary, path, threads):
+    start = time.monotonic()
+    subprocess.run([binary, "fit", path, "--threads", str(threads)], check=True,
+                   stdout=subprocess.DEVNULL)
+    return time.monotonic() - start
+
+
+def fit_row(binary, servo, model, train, val, work, threads, scale, polish=False):
+    out = os.path.join(work, "m%d%s" % (model, "_lm" if polish else ""))
+    shutil.rmtree(out, ignore_errors=True)
+    dimension = len(SERVOS[servo]["servo_free"]) + len(MODELS[model])
+    evaluations = budget_of(dimension, scale)
+    path, dim = write_model_fit(servo, model, train, val, out, evaluations, polish)
+    seconds = run_fit(binary, path, threads)
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    imported = os.path.join(out, "imported")
+    row = {
+        "servo": servo, "model": "M%d" % model + (" + LM" if polish else ""), "free": dim,
+        "budget_evaluations": evaluations, "evaluations": summary["evaluations"],
+        "train_mae_mrad": mae_mrad(os.path.join(out, "best"), os.path.join(imported, "train")),
+        "val_mae_mrad": mae_mrad(os.path.join(out, "best", "validation"),
+                                 os.path.join(imported, "validation")),
+        "best_fitness": summary["best_fitness"], "wall_seconds": seconds,
+        "bam_published_val_mae_mrad": BAM_PUBLISHED.get(servo, {}).get(model) if not polish
+        else None,
+    }
+    if "polish" in summary:
+        row["polish"] = summary["polish"]
+        row["unidentified"] = summary.get("uncertainty", {}).get("unidentified")
+    return row
+
+
+def loop_row(binary, servo, train, val, work, threads):
+    out = os.path.join(work, "loop")
+    shutil.rmtree(out, ignore_errors=True)
+    config = os.path.join(ROOT, "scenarios", "fit", SERVOS[servo]["config"])
+    start = time.monotonic()
+    subprocess.run([binary, "loop", config, "--data", train, "--validation", val, "--out", out,
+                    "--threads", str(threads), "--force"], check=True, stdout=subprocess.DEVNULL)
+    seconds = time.monotonic() - start
+    with open(os.path.join(out, "loop.json")) as f:
+        loop = json.load(f)
+    its = loop["iterations"]
+    return {
+        "servo": servo, "model": "motoflex loop (M1 + " +
+        (" + ".join(it["added_effect"] for it in its if it["added_effect"]) or "nothing") + ")",
+        "free": None, "budget_evaluations": None, "evaluations": loop["evaluations"],
+        "train_mae_mrad": None,
+        "val_mae_before_mrad": 1e3 * its[0]["val_mae_before_rad"] if its else None,
+        "val_mae_mrad": 1e3 * its[-1]["val_mae_after_rad"] if its else None,
+        "wall_seconds": seconds, "bam_published_val_mae_mrad": None,
+    }
+
+
+def nao_rows(binary, work, threads, generations=0, lm_iterations=10):
+    """nao_quick (reference_data/nao, a known truth) with and without the LM polish
+    (`generations` > 0 replaces its budget by that many generations)."""
+    import yaml
+    rows = []
+    os.makedirs(work, exist_ok=True)
+    base = os.path.join(ROOT, "scenarios", "fit", "nao_quick.yaml")
+    for polish in (False, True):
+        with open(base) as f:
+            fit = yaml.safe_load(f)
+        for key in ("scenario", "data", "validation"):
+            fit[key] = os.path.normpath(os.path.join(os.path.dirname(base), fit[key]))
+        out = os.path.join(work, "nao_quick" + ("_lm" if polish else ""))
+        shutil.rmtree(out, ignore_errors=True)
+        fit["out"] = out
+        if generations > 0:
+            fit["budget"] = {"generations": generations}
+        if polish:
+            fit["polish"] = {"method": "lm", "max_iterations": lm_iterations}
+        path = out + ".yaml"
+        with open(path, "w") as f:
+            yaml.safe_dump(fit, f, sort_keys=False)
+        seconds = run_fit(binary, path, threads)
+        with open(os.path.join(out, "summary.json")) as f:
+            s = json.load(f)
+        rows.append({"fit": "nao_quick" + (" + LM" if polish else ""),
+                     "evaluations": s["evaluations"], "best_fitness": s["best_fitness"],
+                     "train_rms_deg": s["rms_deg"].get("overall"),
+                     "polish": s.get("polish"), "wall_seconds": seconds})
+        print(rows[-1], flush=True)
+    return rows
+
+
+def git_hash():
+    return subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                          capture_output=True, text=True).stdout.strip()
+
+
+def number(value, pattern="%.1f"):
+    return "—" if value is None else pattern % value
+
+
+def markdown(rows, nao, args):
+    lines = ["Real servo logs (../shared/data/bam), BAM's friction models fitted by `motoflex fit` "
+             "(CMA-ES, sigma 0.2, no restarts, seed 1, %d threads; budget 400 + 80 per free "
+             "parameter x %.2f), MAE in mrad. git %s, %s. `scripts/report_real_servos.py`." %
+             (args.threads, args.scale, git_hash(), time.strftime("%Y-%m-%d")), "",
+             "| servo (split) | model | free | evaluations | train MAE | held-out MAE | "
+             "BAM published held-out | wall (s) |", "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        held = number(r["val_mae_mrad"])
+        if r.get("val_mae_before_mrad") is not None:
+            held = "%.1f → %.1f" % (r["val_mae_before_mrad"], r["val_mae_mrad"])
+        lines.append("| %s | %s | %s | %d | %s | %s | %s | %.0f |" % (
+            r["servo"], r["model"], number(r["free"], "%d"), r["evaluations"],
+            number(r["train_mae_mrad"]), held, number(r["bam_published_val_mae_mrad"]),
+            r["wall_seconds"]))
+    lines += ["", "Splits: " + "; ".join("%s: %s" % (k, v["split"]) for k, v in SERVOS.items())]
+    if nao:
+        lines += ["", "nao_quick (reference_data/nao, recorded from a known truth)%s:" % (
+            " with %d generations" % args.nao_generations if args.nao_generations else ""), "",
+                  "| fit | evaluations | best fitness | train RMS (deg) | wall (s) |",
+                  "|---|---|---|---|---|"]
+        for r in nao:
+            lines.append("| %s | %d | %.6g | %s | %.0f |" % (
+                r["fit"], r["evaluations"], r["best_fitness"], number(r["train_rms_deg"], "%.4f"),
+                r["wall_seconds"]))
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--binary", default=os.path.join(ROOT, "build", "motoflex"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "runs", "real_servos"))
+    parser.add_argument("--results", default=os.path.join(ROOT, "benchmarks", "real_servos"))
+    parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--scale", type=float, default=1.0, help="multiplies every fit budget")
+    parser.add_argument("--servos", default="xl330,sts3250")
+    parser.add_argument("--models", default="1,2,3,4,5,6")
+    parser.add_argument("--no-loop", action="store_true")
+    parser.add_argument("--no-lm", action="store_true", help="skip the M1 + LM rows")
+    parser.add_argument("--nao", action="store_true", help="also nao_quick with/without LM")
+    parser.add_argument("--nao-generations", type=int, default=0,
+                        help="nao_quick's budget in generations (0: its own)")
+    parser.add_argument("--nao-lm-iterations", type=int, default=10)
+    args = parser.parse_args()
+    if not os.path.isdir(BAM):
+        print("BAM logs absent (%s): nothing to report" % BAM)
+        return 0
+    rows = []
+    for servo in [s for s in args.servos.split(",") if s]:
+        work = os.path.join(args.out, servo)
+        os.makedirs(work, exist_ok=True)
+        train, val = split_logs(servo, work)
+        for model in [int(m) for m in args.models.split(",") if m]:
+            rows.append(fit_row(args.binary, servo, model, train, val, work, args.threads,
+                                args.scale))
+            print(rows[-1], flush=True)
+        if not args.no_lm:
+            rows.append(fit_row(args.binary, servo, 1, train, val, work, args.threads, args.scale,
+                                polish=True))
+            print(rows[-1], flush=True)
+        if not args.no_loop:
+            rows.append(loop_row(args.binary, servo, train, val, work, args.threads))
+            print(rows[-1], flush=True)
+    nao = nao_rows(args.binary, args.out, args.threads, args.nao_generations,
+                   args.nao_lm_iterations) if args.nao else []
+    os.makedirs(args.results, exist_ok=True)
+    document = {"git": git_hash(), "date": time.strftime("%Y-%m-%dT%H:%M:%S"),
+                "threads": args.threads, "budget": "400 + 80 per free parameter, x %g" % args.scale,
+                "splits": {k: v["split"] for k, v in SERVOS.items()}, "rows": rows, "nao": nao}
+    with open(os.path.join(args.results, "real_servos.json"), "w") as f:
+        json.dump(document, f, indent=2)
+    with open(os.path.join(args.results, "real_servos.md"), "w") as f:
+        f.write("\n".join(markdown(rows, nao, args)) + "\n")
+    print("\n".join(markdown(rows, nao, args)))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,38 @@
+#pragma once
+
+// Internal to FitSession: the `polish: {method: lm}` finish — Levenberg–Marquardt (Ceres) on
+// the fit's residual vector (fit_residuals.hpp) from the strategy's best point, within the
+// bounds, and the parameter covariance at the final point (parameter_covariance.hpp).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "motoflex/fit/fit_config.hpp"
+#include "motoflex/fit/parameter_covariance.hpp"
+
+namespace motoflex::detail {
+
+struct LmPolishResult {
+  std::vector<double> x;  // LM's final point (search coordinates)
+  double fitness_before = 0.0;
+  double fitness_after = 0.0;  // F at x, measured as the strategy measures it
+  bool used = false;           // fitness_after < fitness_before: x replaces the best point
+  std::uint64_t rollouts = 0;  // passes over all training logs (residuals and Jacobians)
+  int iterations = 0;
+  std::string termination;  // Ceres's message
+};
+
+LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& start,
+                         double start_fitness);
+
+struct FitUncertainty {
+  LeastSquaresCovariance search;  // in the strategy's coordinates (log where searched so)
+  std::uint64_t rollouts = 0;
+  bool computed = false;  // false: a rollout at x failed, or fewer residuals than parameters
+};
+
+// σ²(JᵀJ)⁻¹ at x with the polish's finite-difference Jacobian.
+FitUncertainty fit_uncertainty(const FitConfig& config, const std::vector<double>& x);
+
+}  // namespace motoflex::detail

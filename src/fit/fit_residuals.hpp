@@ -1,0 +1,46 @@
+#pragma once
+
+// Internal to FitSession: the fit as a least-squares problem. The residual vector holds, for
+// every training log c, scored frame t and scored channel k (joints, then the IMU when scored),
+//
+//   r = √w_k (q_real − q_sim) / √(T_c^m),   T_c = the log's scored frames,
+//
+// so Σ r² is the fitness F of a run whose rollouts all complete. Coordinates are the strategy's
+// (log where the free parameter is searched on a log scale).
+
+#include <cstdint>
+#include <vector>
+
+#include "motoflex/fit/fit_config.hpp"
+
+namespace motoflex::detail {
+
+class FitResiduals {
+ public:
+  // `threads` > 1 simulates the logs (residuals) or the Jacobian's points in parallel (OpenMP);
+  // the numbers do not depend on it.
+  FitResiduals(const FitConfig& config, int threads);
+
+  std::size_t size() const { return size_; }  // N
+  std::size_t dimension() const;              // p
+
+  // r(x) into `out` (size()); false when a rollout fails or ends before its log does (the
+  // residuals are then not comparable).
+  bool evaluate(const std::vector<double>& x, double* out) const;
+
+  // The central finite-difference Jacobian at x (row-major N × p): column i from x ± h_i e_i,
+  // h_i = step · (upper_i − lower_i); one-sided (with r(x) = `r0`) where x ± h_i leaves the
+  // bounds or its rollout fails; a zero column where neither side works. Returns the rollout
+  // sets simulated (each a pass over all logs).
+  std::uint64_t jacobian(const std::vector<double>& x, const std::vector<double>& r0, double step,
+                         std::vector<double>& out) const;
+
+ private:
+  const FitConfig& config_;
+  int threads_;
+  std::size_t size_ = 0;
+  std::vector<std::size_t> first_frame_;  // per case
+  std::vector<double> scale_;             // per case: 1/√(T^m)
+};
+
+}  // namespace motoflex::detail
