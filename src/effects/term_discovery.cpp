@@ -210,16 +210,16 @@ struct Support {
   Eigen::VectorXd beta;
 };
 
-// The supports of 1..max_terms candidates on the forward and the STLSQ paths; the one with the
-// lowest ΔBIC.
-Support best_support(const Normal& n, std::size_t candidates, double rr, double rss_base,
-                     double n_eff, std::size_t max_terms) {
-  Support best;
-  best.delta_bic = 0.0;
+// The supports of 1..max_terms candidates on the forward and the STLSQ paths that the ΔBIC
+// supports (< 0), best first.
+std::vector<Support> supported(const Normal& n, std::size_t candidates, double rr, double rss_base,
+                               double n_eff, std::size_t max_terms) {
   std::set<std::vector<std::size_t>> seen;
   std::vector<std::vector<std::size_t>> supports = forward_supports(n, candidates, rr, max_terms);
-  for (const double threshold : kThresholds)
+  for (const double threshold : kThresholds) {
     supports.push_back(stlsq(n, candidates, threshold, rr));
+  }
+  std::vector<Support> out;
   for (const std::vector<std::size_t>& active : supports) {
     if (active.empty() || active.size() > max_terms || !seen.insert(active).second) continue;
     Support s;
@@ -228,9 +228,46 @@ Support best_support(const Normal& n, std::size_t candidates, double rr, double 
     const double rss1 = std::clamp(s.rss, 1e-300, rss_base);
     s.delta_bic = n_eff * std::log(rss1 / std::max(rss_base, 1e-300)) +
                   static_cast<double>(active.size()) * std::log(n_eff);
-    if (s.delta_bic < best.delta_bic) best = std::move(s);
+    if (s.delta_bic < 0.0) out.push_back(std::move(s));
   }
-  return best;
+  std::stable_sort(out.begin(), out.end(),
+                   [](const Support& a, const Support& b) { return a.delta_bic < b.delta_bic; });
+  return out;
+}
+
+// What a support proposes: its terms at the linearised estimate, and the fit's parameters
+// after the same step.
+TermDiscovery proposal(const Support& best, const std::vector<Candidate>& candidates,
+                       const Normal& n, const detail::FitJacobian& jacobian,
+                       const FitConfig& config) {
+  TermDiscovery out;
+  out.delta_bic = best.delta_bic;
+  for (std::size_t i = 0; i < best.active.size(); ++i) {
+    const Candidate& c = candidates[best.active[i]];
+    const double beta = best.beta(static_cast<Eigen::Index>(n.fit_columns + i));
+    const double value = std::clamp(c.current + beta * c.step_coef, -c.term->bound, c.term->bound);
+    out.terms.push_back(
+        {c.parameter, config.train->model().actuators[c.joint].name, c.term->formula, value});
+    out.estimate.emplace_back(c.parameter, value);
+  }
+  const ParameterSpace& space = *config.space;
+  for (std::size_t i = 0; i < n.fit_columns; ++i) {
+    const detail::Direction& d = jacobian.directions[i];
+    const double coordinate =
+        std::clamp(d.current + best.beta(static_cast<Eigen::Index>(i)) * d.step, d.lower, d.upper);
+    out.fit_start.emplace_back(space.free_parameters()[i].name, space.to_model(i, coordinate));
+  }
+  return out;
+}
+
+// The training fitness of a proposal's terms added to `current` (the fit's own parameters
+// kept): the nonlinear check of the linearised choice. Where collinear candidates fit the
+// linearised residual about equally, the one the rollouts confirm wins.
+double proposal_fitness(const TermDiscovery& p, const FitConfig& config,
+                        const ParameterSet& current) {
+  ParameterSet trial = current;
+  for (const auto& [name, value] : p.estimate) trial.set(name, value);
+  return config.train->evaluate(trial).fitness;
 }
 
 }  // namespace
@@ -251,26 +288,22 @@ TermDiscovery discover_terms(const FitConfig& config, const ParameterSet& curren
   const Normal n = normal_equations(source, jacobian.columns.size() + candidates.size(), residual);
   double rss_base = residual.rss;
   solve_subset(n, {}, residual.rss, &rss_base);
-  const Support best = best_support(n, candidates.size(), residual.rss, rss_base,
-                                    residual.effective_samples, max_terms);
-  if (best.active.empty()) return out;
-  out.explained = (rss_base - std::clamp(best.rss, 0.0, rss_base)) / residual.rss;
-  out.delta_bic = best.delta_bic;
-  for (std::size_t i = 0; i < best.active.size(); ++i) {
-    const Candidate& c = candidates[best.active[i]];
-    const double beta = best.beta(static_cast<Eigen::Index>(n.fit_columns + i));
-    const double value = std::clamp(c.current + beta * c.step_coef, -c.term->bound, c.term->bound);
-    out.terms.push_back(
-        {c.parameter, config.train->model().actuators[c.joint].name, c.term->formula, value});
-    out.estimate.emplace_back(c.parameter, value);
+  const std::vector<Support> supports = supported(n, candidates.size(), residual.rss, rss_base,
+                                                  residual.effective_samples, max_terms);
+  double best_fitness = config.train->evaluate(current).fitness;
+  std::size_t rollouts = out.probe_rollouts + cases;
+  for (const Support& s : supports) {
+    TermDiscovery p = proposal(s, candidates, n, jacobian, config);
+    const double fitness = proposal_fitness(p, config, current);
+    rollouts += cases;
+    if (fitness < best_fitness) {
+      best_fitness = fitness;
+      p.explained = (rss_base - std::clamp(s.rss, 0.0, rss_base)) / residual.rss;
+      p.candidates = out.candidates;
+      out = std::move(p);
+    }
   }
-  const ParameterSpace& space = *config.space;
-  for (std::size_t i = 0; i < n.fit_columns; ++i) {
-    const detail::Direction& d = jacobian.directions[i];
-    const double coordinate =
-        std::clamp(d.current + best.beta(static_cast<Eigen::Index>(i)) * d.step, d.lower, d.upper);
-    out.fit_start.emplace_back(space.free_parameters()[i].name, space.to_model(i, coordinate));
-  }
+  out.probe_rollouts = rollouts;
   return out;
 }
 

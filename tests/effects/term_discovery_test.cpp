@@ -81,7 +81,7 @@ std::pair<double, double> rms_without_and_with(const Discovered& d) {
 TEST(TermDiscovery, ExplainsTheQuadraticDrag) {
   // Truth: −0.003·ω·|ω|. Over the chirp's speeds the linearised regression prefers a viscous-
   // like combination (ω and sgn ω are nearly collinear with ω·|ω| there); what it must do is
-  // remove most of the residual. Measured: 2.914 → 1.141 deg (−61 %).
+  // remove most of the residual. Measured: 2.914 → 0.934 deg (−68 %).
   const Discovered d = discover_at_truth("quadratic_drag", "joint.pendulum.drag_nm_s2_per_rad2");
   ASSERT_FALSE(d.discovery.terms.empty());
   const auto [without, with] = rms_without_and_with(d);

@@ -9,7 +9,10 @@
 // is regressed on those columns together with the fit's own Jacobian (so a term is credited only
 // with what re-tuning the fit's parameters cannot explain), and sequentially thresholded least
 // squares over a path of thresholds proposes sparse supports; the support with the lowest
-// ΔBIC (N_eff·ln RSS₁/RSS₀ + k·ln N_eff, as the ranking's) wins. The loop then refits the model
+// supports whose ΔBIC (N_eff·ln RSS₁/RSS₀ + k·ln N_eff, as the ranking's) is negative are
+// checked with rollouts: the one whose terms, at their linearised estimates, lower the training
+// fitness most wins (collinear candidates can fit the linearised residual about equally; the
+// rollouts tell them apart). The loop then refits the model
 // with those coefficients free and keeps them only if the validation tests pass.
 
 #include <string>
