@@ -8,12 +8,13 @@
 // sensitivity of the simulated encoders to that torque — the linearised residual. The residual
 // is regressed on those columns together with the fit's own Jacobian (so a term is credited only
 // with what re-tuning the fit's parameters cannot explain), and sequentially thresholded least
-// squares over a path of thresholds proposes sparse supports; the support with the lowest
-// supports whose ΔBIC (N_eff·ln RSS₁/RSS₀ + k·ln N_eff, as the ranking's) is negative are
-// checked with rollouts: the one whose terms, at their linearised estimates, lower the training
-// fitness most wins (collinear candidates can fit the linearised residual about equally; the
-// rollouts tell them apart). The loop then refits the model
-// with those coefficients free and keeps them only if the validation tests pass.
+// squares over a path of thresholds proposes sparse supports (plus every single candidate).
+// The linearised fit ranks them by ΔBIC (N_eff·ln RSS₁/RSS₀ + k·ln N_eff, as the ranking's), but
+// on a smooth residual N_eff is a handful of samples and collinear candidates fit about equally,
+// so rollouts decide: the support whose terms, at their linearised estimates (with the fit's
+// parameters kept or moved by the same step), lower the training fitness most, by at least 5 %,
+// wins. The loop then refits the model with those coefficients free and keeps them only if the
+// validation tests pass.
 
 #include <string>
 #include <utility>
