@@ -38,6 +38,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--seconds", type=float, default=5.0)
     parser.add_argument("--json")
+    parser.add_argument("--md", help="also write the table as Markdown (README's speed table)")
     a = parser.parse_args()
     if not os.path.exists(BINARY):
         sys.exit("build/motoflex is missing: run scripts/build first")
@@ -68,6 +69,22 @@ def main():
     if a.json:
         with open(a.json, "w") as f:
             json.dump({"rows": rows, "speedup_4_rollouts_2_threads": speedup}, f, indent=2)
+    if a.md:
+        write_markdown(a.md, rows, speedup, a.repeats, a.seconds)
+
+
+def write_markdown(path, rows, speedup, repeats, seconds):
+    """Steps/s per configuration, one column per solver, as the README shows them."""
+    lines = [f"Physics steps per second of one rollout on one core, median of {repeats} runs "
+             f"of {seconds:g} s; load average at the end {os.getloadavg()[0]:.1f}.", "",
+             "| model | dWorldStep | dWorldQuickStep |", "|---|---|---|"]
+    for name, _ in CONFIGS:
+        sps = {r["solver"]: r["steps_per_s"] for r in rows if r["configuration"] == name}
+        lines.append(f"| {name} | {sps['step']:,.0f} | {sps['quick']:,.0f} |".replace(",", " "))
+    lines += ["", f"4 rollouts of the full Nao pipeline on 2 threads vs 1 thread: speed-up "
+              f"{speedup:.2f}x."]
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
 
 
 if __name__ == "__main__":

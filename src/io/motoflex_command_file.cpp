@@ -91,6 +91,10 @@ std::string read_text(const std::string& path) {
 
 }  // namespace
 
+std::optional<std::size_t> motoflex_2011_column(std::string_view joint) {
+  return known_joint(joint);
+}
+
 bool is_motoflex_command_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;

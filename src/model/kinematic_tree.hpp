@@ -19,6 +19,13 @@ namespace motoflex::detail {
 // one child joint.
 void split_flexible_link(UrdfTree& tree, const std::string& link, int pieces);
 
+// Splits `link`, a single homogeneous box (the 2011 program's legs, motoflex_2011.md §2.9), into
+// `pieces` equal boxes stacked along the box axis closest to the vector from the link's origin
+// to its child joint, joined by kFlex joints where their faces meet; each piece has a box's
+// inertia. Throws std::invalid_argument unless the link has exactly one child joint and its
+// only collision shape is a box.
+void split_flexible_box(UrdfTree& tree, const std::string& link, int pieces);
+
 // World pose of every link for the given joint positions (rad or m by joint index; fixed,
 // flex and floating joints ignore their entry). Links not below the root keep the identity.
 std::vector<Eigen::Isometry3d> link_poses(const UrdfTree& tree,

@@ -43,7 +43,11 @@ void split_flexible_links(UrdfTree& tree, const detail::RobotYaml& spec, const Y
                           int pieces, ErrorCollector& errors) {
   for (const auto& link : spec.flexible_links) {
     try {
-      detail::split_flexible_link(tree, link, pieces);
+      if (spec.flexible_split_box) {
+        detail::split_flexible_box(tree, link, pieces);
+      } else {
+        detail::split_flexible_link(tree, link, pieces);
+      }
     } catch (const std::invalid_argument& error) {
       errors.check([&] { root.at("flexible_links").fail(error.what()); });
     }

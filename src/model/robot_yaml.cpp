@@ -64,6 +64,13 @@ void read_structure(const YamlValue& root, RobotYaml& out, ErrorCollector& error
     if (const auto links = root.find("flexible_links"))
       out.flexible_links = links->as_string_list();
   });
+  errors.check([&] {
+    if (const auto split = root.find("flexible_split")) {
+      const std::string how = split->as_string();
+      if (how != "span" && how != "box") split->fail("expected 'span' or 'box'");
+      out.flexible_split_box = how == "box";
+    }
+  });
   errors.check([&] { out.joint_stops = root.get_bool("joint_stops", true); });
   errors.check([&] { out.ground = root.get_bool("ground", true); });
   errors.check([&] {
@@ -113,13 +120,30 @@ void read_stand_pose(const YamlValue& root, RobotYaml& out, ErrorCollector& erro
 }  // namespace
 
 RobotYaml read_robot_yaml(const YamlValue& root, ErrorCollector& errors) {
-  root.check_keys_within(
-      {"name",           "urdf",      "root_link",       "fixed_base",    "torso_link",
-       "servo",          "servos",    "actuated_joints", "held_joints",   "universal_joints",
-       "flexible_links", "feet",      "contact_links",   "trimesh_links", "capsule_links",
-       "joint_stops",    "ground",    "joint_limits",    "fall",          "initial_clearance_m",
-       "stand_pose",     "parameters"},
-      errors);
+  root.check_keys_within({"name",
+                          "urdf",
+                          "root_link",
+                          "fixed_base",
+                          "torso_link",
+                          "servo",
+                          "servos",
+                          "actuated_joints",
+                          "held_joints",
+                          "universal_joints",
+                          "flexible_links",
+                          "flexible_split",
+                          "feet",
+                          "contact_links",
+                          "trimesh_links",
+                          "capsule_links",
+                          "joint_stops",
+                          "ground",
+                          "joint_limits",
+                          "fall",
+                          "initial_clearance_m",
+                          "stand_pose",
+                          "parameters"},
+                         errors);
   RobotYaml out;
   errors.check([&] { read_identity(root, out); });
   errors.check([&] { read_base(root, out); });

@@ -36,6 +36,7 @@ struct RobotYaml {
   std::map<std::string, double> held;
   std::vector<std::pair<std::string, std::string>> universal_pairs;
   std::vector<std::string> flexible_links;
+  bool flexible_split_box = false;  // `flexible_split: box` (default `span`)
   std::vector<std::string> feet;
   std::vector<std::string> contact_links;
   std::vector<std::string> trimesh_links;

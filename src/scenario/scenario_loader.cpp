@@ -12,9 +12,12 @@
 namespace motoflex {
 namespace {
 
+// The robot: the scenario's `robot:`, or the overrides' (a truth file's, resolved against that
+// file).
 std::shared_ptr<const RobotModel> read_robot(const YamlValue& root,
-                                             const StructureOptions& structure) {
-  const YamlValue robot_field = root.at("robot");
+                                             const StructureOptions& structure,
+                                             const ScenarioOverrides& overrides) {
+  const YamlValue robot_field = overrides.robot ? *overrides.robot : root.at("robot");
   const std::string robot_dir = robot_field.resolve_path(robot_field.as_string());
   if (!std::filesystem::exists(std::filesystem::path(robot_dir) / "robot.yaml")) {
     robot_field.fail("no robot.yaml in '" + robot_dir + "'");
@@ -87,7 +90,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
       [&] { name = root.get_string("name", std::filesystem::path(path).stem().string()); });
   // The robot is read with the structure the physics section asks for.
   errors.throw_if_any();
-  const std::shared_ptr<const RobotModel> model = read_robot(root, physics.structure);
+  const std::shared_ptr<const RobotModel> model = read_robot(root, physics.structure, overrides);
   physics.rollout.servo = read_servo(root, *model, overrides);
 
   Scenario scenario{path, name, model, ParameterSet(model->parameters), physics.rollout, {}, 100.0,

@@ -30,9 +30,25 @@ constexpr int kMaxQuickStepIterations = 10000;
 constexpr int kMaxGearSubsteps = 10000;
 constexpr double kMaxSettle_s = 60.0;
 
+void read_flex_model(const YamlValue& physics, RolloutOptions& rollout) {
+  const auto flex_model = physics.find("flex_model");
+  if (!flex_model) return;
+  const std::string name = flex_model->as_string();
+  if (name == "implicit") {
+    rollout.flex_model = FlexModel::kImplicit;
+  } else if (name == "explicit_cfm") {
+    rollout.flex_model = FlexModel::kExplicitCfm;
+  } else {
+    flex_model->fail("expected 'implicit' or 'explicit_cfm'");
+  }
+}
+
+// Reads the keys of `physics` that are present on top of `out` (a truth file's section goes on
+// top of a scenario's).
 void read_physics_section(const YamlValue& physics, ScenarioPhysics& out) {
-  physics.require_keys_within({"dt_s", "solver", "quickstep_iterations", "gear_substeps",
-                               "flex_sub_bodies", "universal_joints", "settle_s", "hold_torso"});
+  physics.require_keys_within({"dt_s", "solver", "quickstep_iterations", "quickstep_w",
+                               "gear_substeps", "flex_sub_bodies", "flex_model", "max_contacts",
+                               "universal_joints", "settle_s", "hold_torso"});
   RolloutOptions& rollout = out.rollout;
   StructureOptions& structure = out.structure;
   ErrorCollector errors;
@@ -47,6 +63,19 @@ void read_physics_section(const YamlValue& physics, ScenarioPhysics& out) {
     }
   });
   errors.check([&] {
+    rollout.quickstep_w = physics.get_double("quickstep_w", rollout.quickstep_w);
+    if (!(rollout.quickstep_w > 0.0 && rollout.quickstep_w < 2.0)) {
+      physics.at("quickstep_w").fail("must be in (0, 2) (SOR over-relaxation)");
+    }
+  });
+  errors.check([&] { read_flex_model(physics, rollout); });
+  errors.check([&] {
+    rollout.max_contacts_per_foot = physics.get_int("max_contacts", rollout.max_contacts_per_foot);
+    if (rollout.max_contacts_per_foot < 1 || rollout.max_contacts_per_foot > 64) {
+      physics.at("max_contacts").fail("must be between 1 and 64");
+    }
+  });
+  errors.check([&] {
     rollout.gear_substeps = physics.get_int("gear_substeps", rollout.gear_substeps);
     if (rollout.gear_substeps < 1 || rollout.gear_substeps > kMaxGearSubsteps) {
       physics.at("gear_substeps").fail("must be between 1 and " + std::to_string(kMaxGearSubsteps));
@@ -58,15 +87,17 @@ void read_physics_section(const YamlValue& physics, ScenarioPhysics& out) {
       physics.at("flex_sub_bodies").fail("must be between 1 and 16");
     }
   });
-  errors.check([&] { structure.universal_joints = physics.get_bool("universal_joints", true); });
   errors.check([&] {
-    rollout.settle_s = physics.get_double("settle_s", 0.0);
+    structure.universal_joints = physics.get_bool("universal_joints", structure.universal_joints);
+  });
+  errors.check([&] {
+    rollout.settle_s = physics.get_double("settle_s", rollout.settle_s);
     if (!(rollout.settle_s >= 0.0 && rollout.settle_s <= kMaxSettle_s)) {
       physics.at("settle_s")
           .fail("must be between 0 and " + std::to_string(int(kMaxSettle_s)) + " s");
     }
   });
-  errors.check([&] { rollout.hold_torso = physics.get_bool("hold_torso", false); });
+  errors.check([&] { rollout.hold_torso = physics.get_bool("hold_torso", rollout.hold_torso); });
   errors.throw_if_any();
 }
 
@@ -76,6 +107,7 @@ ScenarioPhysics read_scenario_physics(const std::optional<YamlValue>& physics,
                                       const ScenarioOverrides& overrides) {
   ScenarioPhysics out;
   if (physics) read_physics_section(*physics, out);
+  if (overrides.physics) read_physics_section(*overrides.physics, out);
   if (overrides.solver) out.rollout.solver = *overrides.solver;
   if (overrides.flex_sub_bodies) out.structure.flex_sub_bodies = *overrides.flex_sub_bodies;
   if (overrides.gear_substeps) out.rollout.gear_substeps = *overrides.gear_substeps;

@@ -20,7 +20,7 @@ bool is_truth_file(const std::string& path) {
 TruthFile load_truth_file(const std::string& path) {
   const YamlValue root = YamlValue::load_file(path);
   root.require_keys_within(
-      {"name", "seed", "digits", "servo", "physics", "parameters", "recordings"});
+      {"name", "seed", "digits", "robot", "servo", "physics", "parameters", "recordings"});
   TruthFile truth;
   truth.path = path;
   truth.name = root.get_string("name", "truth");
@@ -34,16 +34,10 @@ TruthFile load_truth_file(const std::string& path) {
     }
     truth.overrides.servo = servo->as_string();
   }
-  if (const auto physics = root.find("physics")) {
-    physics->require_keys_within({"flex_sub_bodies", "gear_substeps", "settle_s"});
-    if (physics->has("flex_sub_bodies")) {
-      truth.overrides.flex_sub_bodies = physics->at("flex_sub_bodies").as_int();
-    }
-    if (physics->has("gear_substeps")) {
-      truth.overrides.gear_substeps = physics->at("gear_substeps").as_int();
-    }
-    if (physics->has("settle_s")) truth.overrides.settle_s = physics->at("settle_s").as_double();
-  }
+  // The robot and physics go on top of each recording's scenario (the scenario loader checks
+  // their keys and values, naming this file).
+  truth.overrides.robot = root.find("robot");
+  truth.overrides.physics = root.find("physics");
   truth.parameters = root.find("parameters");
   for (const YamlValue& item : root.at("recordings").items()) {
     item.require_keys_within({"name", "scenario", "parameters"});
@@ -62,13 +56,13 @@ TruthFile load_truth_file(const std::string& path) {
 Scenario truth_recording_scenario(const TruthFile& truth, std::size_t index,
                                   const ScenarioOverrides& extra) {
   const TruthRecording& recording = truth.recordings.at(index);
-  // The caller's overrides, with the truth's servo and physics where the caller sets none (a
-  // truth file sets only these four).
+  // The caller's overrides, with the truth's robot, servo and physics where the caller sets
+  // none (a truth file sets only these; the caller's single physics values still win, being
+  // applied after the truth's physics section).
   ScenarioOverrides overrides = extra;
   if (!overrides.servo) overrides.servo = truth.overrides.servo;
-  if (!overrides.flex_sub_bodies) overrides.flex_sub_bodies = truth.overrides.flex_sub_bodies;
-  if (!overrides.gear_substeps) overrides.gear_substeps = truth.overrides.gear_substeps;
-  if (!overrides.settle_s) overrides.settle_s = truth.overrides.settle_s;
+  if (!overrides.robot) overrides.robot = truth.overrides.robot;
+  if (!overrides.physics) overrides.physics = truth.overrides.physics;
   // The truth values go on top of the scenario's; a parameter file given by the caller wins.
   overrides.parameters_json.reset();
   Scenario scenario = load_scenario(recording.scenario_path, overrides);

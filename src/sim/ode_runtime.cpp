@@ -8,6 +8,7 @@
 #include <string>
 
 #include "motoflex/core/error.hpp"
+#include "ode_quick_step.hpp"
 
 namespace motoflex {
 namespace {
@@ -45,4 +46,18 @@ void ensure_ode_ready() {
   }
 }
 
+namespace detail {
+
+int seeded_quick_step(dWorldID world, double dt_s, unsigned long& seed) {
+  // The lock guards ODE's global random state, the one piece of process-wide mutable state the
+  // step touches; quick steps of parallel rollouts therefore take turns.
+  static std::mutex quick_step_mutex;
+  const std::lock_guard<std::mutex> lock(quick_step_mutex);
+  dRandSetSeed(seed);
+  const int ok = dWorldQuickStep(world, dt_s);
+  seed = dRandGetSeed();
+  return ok;
+}
+
+}  // namespace detail
 }  // namespace motoflex

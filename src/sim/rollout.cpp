@@ -16,6 +16,7 @@
 #include "motoflex/sim/joint_encoder.hpp"
 #include "motoflex/sim/ode_runtime.hpp"
 #include "ode_axis.hpp"
+#include "ode_quick_step.hpp"
 #include "resolved_parameters.hpp"
 #include "rollout_ode_access.hpp"
 
@@ -112,7 +113,8 @@ struct Rollout::Impl {
   std::vector<detail::OdeAxis> axes;                 // per actuator
   std::vector<double> joint_torque1, joint_torque2;  // per model joint, accumulated each step
   std::vector<std::size_t> flex_joints;              // model joint indices
-  double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs
+  double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs (implicit)
+  unsigned long quick_step_seed = 0;                 // this rollout's dRandInt state (quick)
   std::vector<std::unique_ptr<ServoLaw>> servos;     // per actuator
   // Extra rows of an actuated axis that its law asks for (null = none): the armature's inertia
   // row and a separate friction row, each an angular motor between the joint's two bodies.
@@ -180,6 +182,7 @@ void Rollout::Impl::build_world() {
   dWorldSetERP(world, params.world_erp);
   dWorldSetCFM(world, params.world_cfm);
   dWorldSetQuickStepNumIterations(world, options.quickstep_iterations);
+  dWorldSetQuickStepW(world, options.quickstep_w);
   contact_group = dJointGroupCreate(0);
   ground = dCreatePlane(nullptr, 0.0, 0.0, 1.0, 0.0);
 
@@ -229,9 +232,13 @@ void Rollout::Impl::build_bodies() {
       const detail::ShapeGeom geom = colliders.add(shape, bodies[b], b, p);
       if (bodies[b] == nullptr) continue;  // the welded base never falls
       switch (shape.contact) {
-        case GroundContact::kFoot:
-          foot_geoms.push_back(geom);
+        case GroundContact::kFoot: {
+          // The shape's own contact limit, capped by the rollout's per-foot limit.
+          detail::ShapeGeom foot = geom;
+          foot.max_contacts = std::min(foot.max_contacts, options.max_contacts_per_foot);
+          foot_geoms.push_back(foot);
           break;
+        }
         case GroundContact::kContact:
           contact_geoms.push_back(geom);
           break;
@@ -298,6 +305,16 @@ void Rollout::Impl::build_joints() {
       }
       continue;
     }
+    flex_joints.push_back(j);
+    if (options.flex_model == FlexModel::kExplicitCfm) {
+      // The 2011 program's flex rows (motoflex_2011.md §2.9): target 0 and FMax
+      // flexibleFriction, with the CFM the joint copied from the world when it was created
+      // (build_world sets it first), so each row is a damper 1/CFM capped at FMax; the spring
+      // is an explicit torque (apply_flex_springs).
+      dJointSetUniversalParam(joint, dParamFMax, params.flex.friction_nm);
+      dJointSetUniversalParam(joint, dParamFMax2, params.flex.friction_nm);
+      continue;
+    }
     // Flex joint: the spring −D_B·α and damping (seed 001 eq. 1) are integrated implicitly by
     // a motor row whose target velocity is −(ERP/h)·α with the matching CFM, i.e. ODE's
     // spring-damper equivalence ERP = h·k/(h·k + c), CFM = 1/(h·k + c). An explicit torque
@@ -312,7 +329,6 @@ void Rollout::Impl::build_joints() {
       dJointSetUniversalParam(joint, fmax, dInfinity);
       dJointSetUniversalParam(joint, cfm_param, cfm);
     }
-    flex_joints.push_back(j);
     if (params.flex.friction_nm > 0.0) {
       // Coulomb damping of the flex joint: a zero-velocity angular motor on both bending axes.
       dJointID motor = dJointCreateAMotor(world, nullptr);
@@ -514,6 +530,17 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
 }
 
 void Rollout::Impl::apply_flex_springs() {
+  if (options.flex_model == FlexModel::kExplicitCfm) {
+    // seed 001 eq. 1, T_B = −D_B·α, as an explicit torque (a positive universal torque turns
+    // ODE's angle positive, as for the actuators); stable only with the CFM damper of the rows.
+    const double spring = params.flex.spring_nm_per_rad;
+    for (const std::size_t j : flex_joints) {
+      dJointID joint = joints[j];
+      dJointAddUniversalTorques(joint, -spring * dJointGetUniversalAngle1(joint),
+                                -spring * dJointGetUniversalAngle2(joint));
+    }
+    return;
+  }
   for (const std::size_t j : flex_joints) {
     dJointID joint = joints[j];
     dJointSetUniversalParam(joint, dParamVel,
@@ -595,6 +622,7 @@ bool Rollout::Impl::diverged(std::string& detail) const {
 Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
                  const RolloutOptions& options, const std::vector<double>& initial_pose_rad) {
   if (!(options.dt_s > 0.0)) throw ModelError("physics dt_s must be positive");
+  if (options.max_contacts_per_foot < 1) throw ModelError("max_contacts_per_foot must be >= 1");
   if (initial_pose_rad.size() != model.actuators.size()) {
     throw ModelError("initial pose has the wrong number of joints");
   }
@@ -630,8 +658,9 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
     s.collide_feet();
     // Our ODE error handler throws: an error inside the step interrupts it (see ~Impl).
     s.step_interrupted = true;
-    const int ok = s.options.solver == StepSolver::kStep ? dWorldStep(s.world, s.options.dt_s)
-                                                         : dWorldQuickStep(s.world, s.options.dt_s);
+    const int ok = s.options.solver == StepSolver::kStep
+                       ? dWorldStep(s.world, s.options.dt_s)
+                       : detail::seeded_quick_step(s.world, s.options.dt_s, s.quick_step_seed);
     s.step_interrupted = false;
     s.read_foot_forces();
     dJointGroupEmpty(s.contact_group);

@@ -78,8 +78,9 @@ TEST(NaoMotoflex2011Robot, ZeroPoseIsTheOriginalsStartingPose) {
   const BoxInWorld arm = box_of(model, rollout, "LArm");
   EXPECT_NEAR(arm.centre_m.y(), 0.098 + std::sin(0.35) * 0.0966, 1e-12);
   EXPECT_NEAR(arm.centre_m.z(), 0.431 - std::cos(0.35) * 0.0966, 1e-12);
-  EXPECT_NEAR(box_of(model, rollout, "RThigh").centre_m.z(), 0.046 + 0.100 + 0.062, 1e-12);
-  EXPECT_NEAR(box_of(model, rollout, "RTibia").centre_m.z(), 0.046 + 0.0309, 1e-12);
+  // The first of each flexible link's two boxes (flexible_split: box) is its upper half.
+  EXPECT_NEAR(box_of(model, rollout, "RThigh").centre_m.z(), 0.046 + 0.100 + 0.062 + 0.019, 1e-12);
+  EXPECT_NEAR(box_of(model, rollout, "RTibia").centre_m.z(), 0.046 + 0.0309 + 0.01545, 1e-12);
   // Joint anchors: hip 0.246, knee 0.146, ankle 0.046 m (nao.md §3.2).
   for (const auto& [joint, z] : {std::pair{"LHipRoll", 0.246}, std::pair{"LKneePitch", 0.146},
                                  std::pair{"RAnklePitch", 0.046}}) {
@@ -111,6 +112,47 @@ TEST(NaoMotoflex2011Robot, HasNoJointStops) {
     for (int step = 0; step < 300; ++step) rollout.step(pose.data(), pose.data());
     // Measured: 0.600000000 (no stops) and 0.397761999 (at the stop, 1e-6 rad beyond it).
     EXPECT_NEAR(rollout.joint_angle_rad(ankle), stops ? 0.397761 : 0.6, 1e-5);
+  }
+}
+
+// flexible_split: box (motoflex_2011.md §2.9): each leg box becomes numOfSubBoxes equal boxes
+// stacked along z, each with a homogeneous box's inertia, bending where their faces meet.
+TEST(NaoMotoflex2011Robot, SplitsTheLegBoxesAsTheOriginal) {
+  const RobotModel model = load_robot_model(robot_dir("nao_motoflex_2011"), {2, true});
+  // link, mass, box height, height of the box centre above the link's own joint's anchor
+  struct Leg {
+    const char* link;
+    double mass_kg, height_m, centre_below_joint_m;
+  };
+  for (const Leg& leg :
+       {Leg{"LThigh", 0.533, 0.076, 0.038}, Leg{"RTibia", 0.423, 0.0618, 0.0691}}) {
+    SCOPED_TRACE(leg.link);
+    int pieces = 0;
+    for (const BodySpec& body : model.bodies) {
+      if (body.collisions.size() != 1 || body.collisions[0].link.rfind(leg.link, 0) != 0) continue;
+      ++pieces;
+      const double m = leg.mass_kg / 2.0, h = leg.height_m / 2.0;
+      EXPECT_NEAR(body.mass_kg, m, 1e-12);
+      EXPECT_NEAR(body.collisions[0].size_m.z(), h, 1e-12);
+      EXPECT_NEAR(body.inertia_kg_m2(0, 0), m / 12.0 * (0.05 * 0.05 + h * h), 1e-12);
+      EXPECT_NEAR(body.inertia_kg_m2(2, 2), m / 12.0 * (2 * 0.05 * 0.05), 1e-12);
+    }
+    EXPECT_EQ(pieces, 2);
+    // The bending joint sits at the box centre, below the link's own joint.
+    const std::string flex = std::string(leg.link) + "#flex1";
+    const std::string own = leg.link[1] == 'T' && leg.link[2] == 'h'
+                                ? std::string(1, leg.link[0]) + "HipPitch"
+                                : std::string(1, leg.link[0]) + "KneePitch";
+    const ActuatorSpec& a = model.actuators[*model.actuator_index(own)];
+    bool found = false;
+    for (const JointSpec& joint : model.joints) {
+      if (joint.name != flex) continue;
+      found = true;
+      EXPECT_EQ(joint.kind, JointKind::kFlex);
+      EXPECT_NEAR(model.joints[a.joint].anchor_W0_m.z() - joint.anchor_W0_m.z(),
+                  leg.centre_below_joint_m, 1e-12);
+    }
+    EXPECT_TRUE(found) << flex;
   }
 }
 

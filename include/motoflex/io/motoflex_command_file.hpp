@@ -1,6 +1,9 @@
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "motoflex/io/joint_log.hpp"
 
@@ -22,6 +25,11 @@ namespace motoflex {
 // moves the left foot outward (+y); file RHipRoll correlates +0.91 with the right foot's y, as
 // Aldebaran's RHipRoll does. Imported angle = file value, negated for LHipRoll and LAnkleRoll.
 inline constexpr double kMotoflex2011RowPeriod_s = 0.02;
+
+// The column of `joint` (an Aldebaran name) in the original's order above: LHipRoll 0 …
+// RAnkleRoll 9, also the joint's index in the original's robot (its I gain, motoflex_2011.md
+// §2.4); nullopt for any other name.
+std::optional<std::size_t> motoflex_2011_column(std::string_view joint);
 
 // When each row is commanded.
 enum class MotoflexCommandClock {

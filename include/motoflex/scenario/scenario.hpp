@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "motoflex/io/yaml_reader.hpp"
 #include "motoflex/model/parameters.hpp"
 #include "motoflex/model/robot_model.hpp"
 #include "motoflex/motion/command_trajectory.hpp"
@@ -20,8 +21,11 @@ namespace motoflex {
 //   robot: robots/nao            # folder with robot.yaml, relative to this file
 //   servo: motoflex              # optional; the robot's default otherwise
 //   seed: 1                      # sensor-noise stream
-//   physics: {dt_s: 0.001, solver: step, quickstep_iterations: 20, gear_substeps: 100,
-//             flex_sub_bodies: 1, universal_joints: true, settle_s: 0.5, hold_torso: false}
+//   physics: {dt_s: 0.001, solver: step, quickstep_iterations: 20, quickstep_w: 1.3,
+//             gear_substeps: 100, flex_sub_bodies: 1, flex_model: implicit, max_contacts: 4,
+//             universal_joints: true, settle_s: 0.5, hold_torso: false}
+//            # flex_model: implicit | explicit_cfm (FlexModel, rollout.hpp); max_contacts: per
+//            # foot box and step; quickstep_w: SOR factor of solver: quick
 //   motion:                      # exactly one of:
 //     log: ../reference_data/walk.csv        # replay the .cmd columns of a joint log
 //     keyframes: {rate_hz: 100, frames: [{t_s: 0, pose: {LKneePitch: 0.5}}, ...]}
@@ -60,8 +64,14 @@ struct ScenarioOverrides {
   std::map<std::string, double> walk_options;
   std::optional<std::string> parameters_json;  // --params P.json
   bool allow_out_of_bounds = false;            // --allow-out-of-bounds (for parameters_json)
-  std::optional<StepSolver> solver;            // --solver step|quick
-  std::optional<std::string> servo;            // --servo (a servo law's name)
+  // A `physics:` section read on top of the scenario's (a truth file's), before the single
+  // overrides below.
+  std::optional<YamlValue> physics;
+  // A `robot:` value used instead of the scenario's (a truth file's; its path resolves against
+  // the file it was written in).
+  std::optional<YamlValue> robot;
+  std::optional<StepSolver> solver;  // --solver step|quick
+  std::optional<std::string> servo;  // --servo (a servo law's name)
   std::optional<int> flex_sub_bodies;
   std::optional<int> gear_substeps;
   std::optional<bool> universal_joints;
@@ -76,7 +86,6 @@ Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrid
 
 std::optional<StepSolver> parse_step_solver(const std::string& text);
 
-class YamlValue;
 // Reads a `physics:` section's `dt_s` (in (0, 0.01] s) and `solver` (step | quick) into
 // `rollout`, leaving what is absent; throws InputError naming the key otherwise. The caller
 // checks which other keys the section may have.

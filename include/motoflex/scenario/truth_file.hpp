@@ -16,8 +16,11 @@ namespace motoflex {
 //   name: nao_motoflex
 //   seed: 7                            # sensor-noise streams (one per recording, see below)
 //   digits: 9                          # significant digits of recorded angles (0: exact)
+//   robot: ../robots/nao_motoflex_2011 # optional: replaces each scenario's robot (the motions
+//                                      #   are planned for it)
 //   servo: motoflex                    # optional: replaces each scenario's servo
-//   physics: {flex_sub_bodies: 2, gear_substeps: 100, settle_s: 0.5}   # optional overrides
+//   physics: {flex_sub_bodies: 2, gear_substeps: 100, settle_s: 0.5}   # optional: any key of
+//                                      #   a scenario's physics, on top of each scenario's
 //   parameters: {sensor.resolution_bits: 12, motor.R_ohm: 6.6}         # the truth values
 //   recordings:
 //     - {name: train/walk, scenario: ../walks/nao_walk_50_2.yaml, parameters: {...}}
@@ -32,7 +35,7 @@ struct TruthFile {
   std::string name;
   int seed = 1;
   int digits = 0;
-  ScenarioOverrides overrides;          // the truth's servo and physics
+  ScenarioOverrides overrides;          // the truth's robot, servo and physics
   std::optional<YamlValue> parameters;  // the truth values for every recording
   std::vector<TruthRecording> recordings;
 };
@@ -46,7 +49,7 @@ bool is_truth_file(const std::string& path);
 TruthFile load_truth_file(const std::string& path);
 
 // The scenario of recording `index` as `motoflex record` simulates it: loaded with the truth's
-// servo and physics overrides (then `extra`'s, which win), the truth's and the recording's
+// robot, servo and physics overrides (then `extra`'s, which win), the truth's and the recording's
 // parameters applied on top (then `extra.parameters_json`, which wins), and the sensor-noise seed
 // of that recording, mix64(seed · 0x100000001B3 + index). Throws InputError for a parameter the
 // robot does not have.

@@ -16,15 +16,36 @@ namespace motoflex {
 
 enum class StepSolver {
   kStep,       // dWorldStep: exact LCP (Dantzig); bit-reproducible whatever the thread count
-  kQuickStep,  // dWorldQuickStep: iterative, faster, but NOT reproducible when rollouts run in
-               // parallel threads: it shuffles constraint rows with ODE's process-global RNG
+  kQuickStep,  // dWorldQuickStep: iterative and faster. It shuffles constraint rows with ODE's
+               // process-global random generator; each rollout swaps in its own seed (0 at the
+               // start, like a fresh process) under a process-wide lock, so a quick rollout is
+               // reproducible whatever the threads, but quick steps of parallel rollouts do not
+               // overlap (src/sim/ode_runtime.cpp)
+};
+
+// How the bending joints of flexible links (seed 001 §3.3) carry their spring.
+enum class FlexModel {
+  // Spring and damper in one implicit motor row per axis (target −(ERP/h)·α, CFM of ODE's
+  // spring-damper equivalence): stable at any step; flex.damping_nm_s_per_rad damps it.
+  kImplicit,
+  // The 2011 program's (motoflex_2011.md §2.9): an explicit torque −flex.spring_nm_per_rad·α
+  // each step, plus a motor row with target 0 and FMax flex.friction_nm whose CFM is the world's,
+  // i.e. a damper 1/world.cfm (276 N·m·s/rad at the original's 3.617e-3) capped at FMax.
+  kExplicitCfm,
 };
 
 struct RolloutOptions {
   double dt_s = 0.001;  // physics step
   StepSolver solver = StepSolver::kStep;
   int quickstep_iterations = 20;  // dWorldQuickStep only
-  int gear_substeps = 100;        // gear sub-steps per physics step (motoflex servo)
+  double quickstep_w = 1.3;       // dWorldQuickStep's SOR over-relaxation (ODE's default 1.3)
+  FlexModel flex_model = FlexModel::kImplicit;
+  // A cap on the contact points per foot shape and step, below each shape's own limit (box and
+  // cylinder 4, capsule 2, sphere 1, mesh 8); the default caps nothing. ODE's box-plane
+  // collider returns at most 4, so the 2011 program's 10 per pair (motoflex_2011.md §2.10)
+  // changes nothing for box feet on the ground plane.
+  int max_contacts_per_foot = 64;
+  int gear_substeps = 100;  // gear sub-steps per physics step (motoflex servo)
   // Servo law of every actuator (servo_law.hpp registry); empty = each joint's own law as the
   // robot assigns it (actuator_servo_name).
   std::string servo = "ideal";

@@ -7,6 +7,7 @@ namespace motoflex {
 
 // Each law's file defines its entry; adding a law is its file plus one line in each list below.
 ServoLawInfo motoflex_servo_law_info();
+ServoLawInfo motoflex_2011_servo_law_info();
 ServoLawInfo velocity_servo_law_info();
 ServoLawInfo ideal_servo_law_info();
 ServoLawInfo bench_servo_law_info();
@@ -16,9 +17,9 @@ ServoLawInfo feetech_servo_law_info();
 
 const std::vector<ServoLawInfo>& servo_laws() {
   static const std::vector<ServoLawInfo> laws = {
-      motoflex_servo_law_info(), velocity_servo_law_info(),  ideal_servo_law_info(),
-      bench_servo_law_info(),    pd_torque_servo_law_info(), dynamixel_servo_law_info(),
-      feetech_servo_law_info(),
+      motoflex_servo_law_info(),  motoflex_2011_servo_law_info(), velocity_servo_law_info(),
+      ideal_servo_law_info(),     bench_servo_law_info(),         pd_torque_servo_law_info(),
+      dynamixel_servo_law_info(), feetech_servo_law_info(),
   };
   return laws;
 }

@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""The README table of seed 001's experiments, from what `motoflex experiment seed001` wrote.
+
+Reads DIR/seed001.json and writes DIR/table.md: one row per experiment of seed 001 §5, the
+paper's number beside ours. The paper's numbers (and those of the original 2011 program rebuilt,
+../shared/reference/motoflex_2011.md §1) are facts from the references, fixed here; every number
+in the "ours" column comes from the JSON.
+
+Usage: seed001_table.py [DIR]   (default benchmarks/seed001)
+"""
+
+import json
+import math
+import os
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# (walk, variant, row label, the paper's result) in the order of the paper's Section 5.
+ROWS = [
+    ("walk_200_1", "rigid", "200 mm/s, 1 s: rigid model", "200 mm/s"),
+    ("walk_200_1", "ext_2011", "200 mm/s, 1 s: extended, 2011 semantics, Normal.gnm",
+     "209 mm/s, pitch oscillates, every second oscillation further out (original program "
+     "rebuilt: 214 mm/s, falls at 5.42 s)"),
+    ("walk_200_1", "ext_physical", "200 mm/s, 1 s: extended, physical semantics", "209 mm/s"),
+    ("walk_50_2", "rigid", "50 mm/s, 2 s: rigid model", "walks on"),
+    ("walk_50_2", "ext_2011", "50 mm/s, 2 s: extended, 2011 semantics, Normal.gnm",
+     "falls after the first step, sideways (original program rebuilt: falls at 3.08 s, "
+     "0.38 m lateral)"),
+    ("walk_50_2", "ext_physical", "50 mm/s, 2 s: extended, physical semantics",
+     "falls after the first step"),
+]
+
+
+def degrees(rad):
+    return math.degrees(rad) if rad is not None else float("nan")
+
+
+def describe_run(run):
+    parts = []
+    if run.get("fell"):
+        parts.append(f"falls at {run['fall_s']:.2f} s ({run.get('fall_direction') or '?'})")
+    else:
+        parts.append("no fall")
+    if run.get("speed_mm_s") is not None:
+        parts.append(f"{run['speed_mm_s']:.1f} mm/s over the steady part")
+    lateral_m = run["lateral_m"] if abs(run["lateral_m"]) >= 0.005 else 0.0
+    parts.append(f"lateral {lateral_m:.2f} m")
+    parts.append(f"pitch range {degrees(run.get('pitch_range_rad')):.1f}°")
+    if run.get("pitch_alternation") is not None:
+        parts.append(f"alternation {run['pitch_alternation']:.2f}")
+    parts.append(f"peak roll {degrees(run.get('max_abs_roll_rad')):.1f}°")
+    return ", ".join(parts)
+
+
+def describe_zmp(variant, result):
+    trials = result["trials"]
+    walked = [t for t in trials if not t.get("fell") and t.get("speed_mm_s") is not None]
+    chosen = result.get("chosen")
+    text = f"{variant}: {len(walked)} of {len(trials)} settings walk to the end"
+    if chosen:
+        pick = next(t for t in trials
+                    if t["option"] == chosen["option"] and t["value"] == chosen["value"])
+        text += (f"; chosen `{chosen['option']}` {chosen['value']:g} (peak roll "
+                 f"{degrees(pick['max_abs_roll_rad']):.1f}°, {pick['speed_mm_s']:.0f} mm/s)")
+    return text
+
+
+def table_lines(data):
+    lines = ["| row | paper | ours |", "|---|---|---|"]
+    for walk, variant, label, paper in ROWS:
+        run = data.get(walk, {}).get(variant)
+        ours = describe_run(run) if run else "not run"
+        lines.append(f"| {label} | {paper} | {ours} |")
+    zmp = data.get("zmp_experiment")
+    if zmp:
+        cells = [describe_zmp(v, r) for v, r in zmp["variants"].items()]
+        lines.append("| modified reference ZMP, 50 mm/s, extended | stable in simulation iff on "
+                     f"the robot | {'; '.join(cells)} |")
+    return lines
+
+
+def main():
+    folder = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "benchmarks", "seed001")
+    with open(os.path.join(folder, "seed001.json"), encoding="utf-8") as f:
+        data = json.load(f)
+    lines = table_lines(data)
+    with open(os.path.join(folder, "table.md"), "w", encoding="utf-8") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,86 @@
+// scenarios/truth/nao_motoflex_2011.yaml, the 2011 program's physics as options of ours:
+// flex_model: explicit_cfm (motoflex_2011.md §2.9: an explicit spring held only by the motor
+// rows that the world CFM turns into dampers; with flexibleFriction = 0 the original collapses
+// within 18 ms; ours ends within 0.1 s), solver: quick with quickstep_w (reproducible whatever the
+// threads) and the physics keys a truth file may set on top of its recordings' scenarios.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli/cli_test_support.hpp"
+#include "motoflex/core/error.hpp"
+#include "motoflex/scenario/scenario.hpp"
+#include "motoflex/scenario/truth_file.hpp"
+#include "motoflex/sim/parallel_rollouts.hpp"
+#include "motoflex/sim/rollout.hpp"
+
+namespace motoflex::testing {
+namespace {
+
+const std::string kTruth =
+    std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/truth/nao_motoflex_2011.yaml";
+
+// The 2011 truth replaying `rows` rows of a command file that holds the zero pose (the robot
+// stands straight-legged, as the original builds it).
+Scenario standing(const std::string& name, int rows) {
+  const auto dir = fresh_dir(name);
+  std::string text =
+      "LHipRoll;LHipPitch;LKneePitch;LAnklePitch;LAnkleRoll;RHipRoll;RHipPitch;RKneePitch;"
+      "RAnklePitch;RAnkleRoll\n";
+  for (int r = 0; r < rows; ++r) text += "0;0;0;0;0;0;0;0;0;0\n";
+  write_text(dir / "zero.csv", text);
+  ScenarioOverrides overrides;
+  overrides.motion_log = (dir / "zero.csv").string();
+  return truth_recording_scenario(load_truth_file(kTruth), 0, overrides);
+}
+
+TEST(Truth2011, TheSpringOfTheFlexJointsNeedsTheirCfmDamper) {
+  Scenario s = standing("truth_2011_flex", 26);  // 0.5 s
+  EXPECT_EQ(s.rollout.flex_model, FlexModel::kExplicitCfm);
+  EXPECT_EQ(s.rollout.solver, StepSolver::kQuickStep);
+  EXPECT_EQ(s.rollout.quickstep_iterations, 20);
+  EXPECT_EQ(s.rollout.quickstep_w, 1.3);
+  const RolloutResult held = run_rollout(*s.model, s.parameters, s.commands, s.rollout);
+  EXPECT_EQ(held.end, RolloutEnd::kCompleted) << held.end_detail;
+  s.parameters.set("flex.friction_nm", 0.0);
+  const RolloutResult spring_alone = run_rollout(*s.model, s.parameters, s.commands, s.rollout);
+  // Measured: ends at 0.035 s, when a body moves absurdly fast (the original: collapsed within
+  // 18 ms, by its own criterion).
+  EXPECT_NE(spring_alone.end, RolloutEnd::kCompleted);
+  EXPECT_LT(spring_alone.end_time_s, 0.1);
+}
+
+TEST(Truth2011, QuickStepIsReproducibleWhateverTheThreads) {
+  const Scenario s = standing("truth_2011_quick", 16);  // 0.3 s, into the velocity phase
+  const RolloutJob job{s.model.get(), &s.parameters, &s.commands, s.rollout};
+  const std::vector<RolloutResult> alone = run_rollouts({job}, 1);
+  const std::vector<RolloutResult> parallel = run_rollouts({job, job, job}, 2);
+  ASSERT_EQ(alone[0].end, RolloutEnd::kCompleted);
+  for (const RolloutResult& r : parallel) {
+    EXPECT_EQ(r.measured_rad, alone[0].measured_rad);
+    EXPECT_EQ(r.torso_position_m, alone[0].torso_position_m);
+  }
+}
+
+TEST(Truth2011, PhysicsKeysAreChecked) {
+  const auto dir = fresh_dir("truth_2011_physics");
+  for (const char* bad : {"quickstep_w: 2.0", "flex_model: springy", "max_contacts: 0"}) {
+    write_text(dir / "s.yaml", "robot: " + std::string(MOTOFLEX_SOURCE_DIR) +
+                                   "/scenarios/robots/nao_motoflex_2011\nservo: ideal\n"
+                                   "physics: {" +
+                                   bad + "}\nmotion: {stand: {duration_s: 0.1}}\n");
+    EXPECT_THROW(load_scenario((dir / "s.yaml").string()), InputError) << bad;
+  }
+  write_text(dir / "s.yaml", "robot: " + std::string(MOTOFLEX_SOURCE_DIR) +
+                                 "/scenarios/robots/nao_motoflex_2011\nservo: ideal\n"
+                                 "physics: {quickstep_w: 1.1, flex_model: explicit_cfm, "
+                                 "max_contacts: 10}\nmotion: {stand: {duration_s: 0.1}}\n");
+  const Scenario s = load_scenario((dir / "s.yaml").string());
+  EXPECT_EQ(s.rollout.quickstep_w, 1.1);
+  EXPECT_EQ(s.rollout.flex_model, FlexModel::kExplicitCfm);
+  EXPECT_EQ(s.rollout.max_contacts_per_foot, 10);
+}
+
+}  // namespace
+}  // namespace motoflex::testing
