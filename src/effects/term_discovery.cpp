@@ -23,6 +23,8 @@ constexpr double kRidge = 1e-6;              // on the standardised normal equat
 // Thresholds of the STLSQ path, as fractions of the largest standardised term coefficient.
 constexpr double kThresholds[] = {0.7, 0.5, 0.35, 0.25, 0.15, 0.1, 0.05, 0.02};
 constexpr int kStlsqSweeps = 10;
+// A proposal must lower the training fitness by this fraction (checked with rollouts).
+constexpr double kMinTrainingGain = 0.05;
 
 // One candidate column: a term on one joint, its response to a probe step of `step_coef`.
 struct Candidate {
@@ -210,8 +212,9 @@ struct Support {
   Eigen::VectorXd beta;
 };
 
-// The supports of 1..max_terms candidates on the forward and the STLSQ paths that the ΔBIC
-// supports (< 0), best first.
+// The supports of 1..max_terms candidates on the forward and the STLSQ paths, and every single
+// candidate, by ΔBIC (best first). With a smooth residual N_eff is a handful of samples and the
+// ΔBIC a weak screen: the rollouts (proposal_fitness) and the refit's validation decide.
 std::vector<Support> supported(const Normal& n, std::size_t candidates, double rr, double rss_base,
                                double n_eff, std::size_t max_terms) {
   std::set<std::vector<std::size_t>> seen;
@@ -219,6 +222,7 @@ std::vector<Support> supported(const Normal& n, std::size_t candidates, double r
   for (const double threshold : kThresholds) {
     supports.push_back(stlsq(n, candidates, threshold, rr));
   }
+  for (std::size_t a = 0; a < candidates; ++a) supports.push_back({a});
   std::vector<Support> out;
   for (const std::vector<std::size_t>& active : supports) {
     if (active.empty() || active.size() > max_terms || !seen.insert(active).second) continue;
@@ -228,7 +232,7 @@ std::vector<Support> supported(const Normal& n, std::size_t candidates, double r
     const double rss1 = std::clamp(s.rss, 1e-300, rss_base);
     s.delta_bic = n_eff * std::log(rss1 / std::max(rss_base, 1e-300)) +
                   static_cast<double>(active.size()) * std::log(n_eff);
-    if (s.delta_bic < 0.0) out.push_back(std::move(s));
+    out.push_back(std::move(s));
   }
   std::stable_sort(out.begin(), out.end(),
                    [](const Support& a, const Support& b) { return a.delta_bic < b.delta_bic; });
@@ -264,9 +268,17 @@ TermDiscovery proposal(const Support& best, const std::vector<Candidate>& candid
 // kept): the nonlinear check of the linearised choice. Where collinear candidates fit the
 // linearised residual about equally, the one the rollouts confirm wins.
 double proposal_fitness(const TermDiscovery& p, const FitConfig& config,
-                        const ParameterSet& current) {
+                        const ParameterSet& current, bool move_fit) {
   ParameterSet trial = current;
   for (const auto& [name, value] : p.estimate) trial.set(name, value);
+  if (move_fit) {
+    const ParameterSpace& space = *config.space;
+    for (std::size_t i = 0; i < p.fit_start.size(); ++i) {
+      for (const auto& target : space.free_parameters()[i].targets) {
+        trial.set(target, p.fit_start[i].second);
+      }
+    }
+  }
   return config.train->evaluate(trial).fitness;
 }
 
@@ -290,12 +302,15 @@ TermDiscovery discover_terms(const FitConfig& config, const ParameterSet& curren
   solve_subset(n, {}, residual.rss, &rss_base);
   const std::vector<Support> supports = supported(n, candidates.size(), residual.rss, rss_base,
                                                   residual.effective_samples, max_terms);
-  double best_fitness = config.train->evaluate(current).fitness;
+  double best_fitness = (1.0 - kMinTrainingGain) * config.train->evaluate(current).fitness;
   std::size_t rollouts = out.probe_rollouts + cases;
   for (const Support& s : supports) {
     TermDiscovery p = proposal(s, candidates, n, jacobian, config);
-    const double fitness = proposal_fitness(p, config, current);
-    rollouts += cases;
+    const double kept = proposal_fitness(p, config, current, false);
+    const double moved = proposal_fitness(p, config, current, true);
+    rollouts += 2 * cases;
+    if (kept < moved) p.fit_start.clear();  // the refit then starts from the fit's own values
+    const double fitness = std::min(kept, moved);
     if (fitness < best_fitness) {
       best_fitness = fitness;
       p.explained = (rss_base - std::clamp(s.rss, 0.0, rss_base)) / residual.rss;
