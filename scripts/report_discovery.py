@@ -4,9 +4,9 @@ log set whose truth has a torque no library effect models (reference_data/hidden
 quadratic_drag, load_saturation) and writes the table: residual -> term found -> validation
 error before/after, with the truth next to it.
 
-Usage: report_discovery.py [--binary build/motoflex] [--out runs/discovery_report]
-                           [--threads 2] [--effects a,b] [--reuse]
---reuse reads loops already in OUT/<effect>/ instead of running them.
+Usage: report_discovery.py [--binary build/motoflex] [--out benchmarks/discovery]
+                           [--runs DIR] [--threads 2] [--effects a,b] [--reuse]
+Each loop runs in RUNS/<effect>/ (default OUT/runs); --reuse reads loops already there.
 Writes OUT/discovery_report.md and OUT/discovery_report.json.
 """
 import argparse
@@ -62,7 +62,8 @@ def row_of(effect, out, seconds):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--binary", default=os.path.join(ROOT, "build", "motoflex"))
-    parser.add_argument("--out", default=os.path.join(ROOT, "runs", "discovery_report"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "benchmarks", "discovery"))
+    parser.add_argument("--runs", help="where the loops run (default OUT/runs)")
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--effects", default=",".join(EFFECTS))
     parser.add_argument("--reuse", action="store_true", help="read the loops already in OUT")
@@ -70,7 +71,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     rows = []
     for effect in [e for e in args.effects.split(",") if e]:
-        out = os.path.join(args.out, effect)
+        out = os.path.join(args.runs or os.path.join(args.out, "runs"), effect)
         seconds = None if args.reuse else run(args.binary, effect, out, args.threads)
         rows.append(row_of(effect, out, seconds))
         print(rows[-1], flush=True)

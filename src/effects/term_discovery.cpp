@@ -25,6 +25,7 @@ constexpr double kThresholds[] = {0.7, 0.5, 0.35, 0.25, 0.15, 0.1, 0.05, 0.02};
 constexpr int kStlsqSweeps = 10;
 // A proposal must lower the training fitness by this fraction (checked with rollouts).
 constexpr double kMinTrainingGain = 0.05;
+constexpr double kLineSearch[] = {0.5, 1.0, 2.0};
 
 // One candidate column: a term on one joint, its response to a probe step of `step_coef`.
 struct Candidate {
@@ -268,18 +269,54 @@ TermDiscovery proposal(const Support& best, const std::vector<Candidate>& candid
 // kept): the nonlinear check of the linearised choice. Where collinear candidates fit the
 // linearised residual about equally, the one the rollouts confirm wins.
 double proposal_fitness(const TermDiscovery& p, const FitConfig& config,
-                        const ParameterSet& current, bool move_fit) {
+                        const ParameterSet& current, bool move_fit, double scale) {
   ParameterSet trial = current;
-  for (const auto& [name, value] : p.estimate) trial.set(name, value);
+  for (const auto& [name, value] : p.estimate) {
+    trial.set(name, current.get(name) + scale * (value - current.get(name)));
+  }
   if (move_fit) {
     const ParameterSpace& space = *config.space;
     for (std::size_t i = 0; i < p.fit_start.size(); ++i) {
+      const double from = current.get(space.free_parameters()[i].targets.front());
       for (const auto& target : space.free_parameters()[i].targets) {
-        trial.set(target, p.fit_start[i].second);
+        trial.set(target, from + scale * (p.fit_start[i].second - from));
       }
     }
   }
   return config.train->evaluate(trial).fitness;
+}
+
+// The proposal's step scaled by the best of kLineSearch (the linearised size of a term's
+// coefficient can be far off where the response is not linear), with the fit's parameters kept
+// or moved: `p` is updated to that step; returns its training fitness and counts the rollouts.
+double line_search(TermDiscovery& p, const FitConfig& config, const ParameterSet& current,
+                   std::size_t* rollouts) {
+  double best = std::numeric_limits<double>::infinity();
+  double best_scale = 1.0;
+  bool best_moved = false;
+  for (const double scale : kLineSearch) {
+    for (const bool moved : {false, true}) {
+      const double fitness = proposal_fitness(p, config, current, moved, scale);
+      *rollouts += config.train->cases().size();
+      if (fitness < best) best = fitness, best_scale = scale, best_moved = moved;
+    }
+  }
+  for (auto& [name, value] : p.estimate) {
+    value = current.get(name) + best_scale * (value - current.get(name));
+  }
+  for (auto& term : p.terms)
+    term.estimate =
+        current.get(term.parameter) + best_scale * (term.estimate - current.get(term.parameter));
+  if (!best_moved) {
+    p.fit_start.clear();  // the refit then starts from the fit's own values
+  } else {
+    const ParameterSpace& space = *config.space;
+    for (std::size_t i = 0; i < p.fit_start.size(); ++i) {
+      const double from = current.get(space.free_parameters()[i].targets.front());
+      p.fit_start[i].second = from + best_scale * (p.fit_start[i].second - from);
+    }
+  }
+  return best;
 }
 
 }  // namespace
@@ -306,11 +343,7 @@ TermDiscovery discover_terms(const FitConfig& config, const ParameterSet& curren
   std::size_t rollouts = out.probe_rollouts + cases;
   for (const Support& s : supports) {
     TermDiscovery p = proposal(s, candidates, n, jacobian, config);
-    const double kept = proposal_fitness(p, config, current, false);
-    const double moved = proposal_fitness(p, config, current, true);
-    rollouts += 2 * cases;
-    if (kept < moved) p.fit_start.clear();  // the refit then starts from the fit's own values
-    const double fitness = std::min(kept, moved);
+    const double fitness = line_search(p, config, current, &rollouts);
     if (fitness < best_fitness) {
       best_fitness = fitness;
       p.explained = (rss_base - std::clamp(s.rss, 0.0, rss_base)) / residual.rss;
