@@ -40,6 +40,11 @@ def run(binary, effect, out, threads):
     return time.monotonic() - start
 
 
+def cell(text):
+    """Markdown table cell: |ω| must not end the cell."""
+    return text.replace("|", "\\|")
+
+
 def row_of(effect, out, seconds):
     with open(os.path.join(out, "loop.json")) as f:
         loop = json.load(f)
@@ -82,8 +87,8 @@ def main():
     for r in rows:
         change = 100.0 * (r["val_rms_after_deg"] - r["val_rms_before_deg"]) / r["val_rms_before_deg"]
         lines.append("| %s: %s | %s | %s | %.4f → %.4f | %+.1f %% | %.2f → %.2f | %d | %.0f |" % (
-            r["data"], r["truth"], " + ".join(r["added"]) or "nothing",
-            "; ".join(r["term_found"]) or "–", r["val_rms_before_deg"], r["val_rms_after_deg"],
+            r["data"], cell(r["truth"]), " + ".join(r["added"]) or "nothing",
+            cell("; ".join(r["term_found"])) or "–", r["val_rms_before_deg"], r["val_rms_after_deg"],
             change, r["val_mae_before_mrad"], r["val_mae_after_mrad"], r["evaluations"],
             r["wall_seconds"]))
     write_report(args.out, "discovery_report", lines, rows)
