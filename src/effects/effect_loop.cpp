@@ -11,6 +11,7 @@
 #include "motoflex/core/folder_lock.hpp"
 #include "motoflex/effects/convergence_guard.hpp"
 #include "motoflex/effects/loop_report.hpp"
+#include "motoflex/effects/term_discovery.hpp"
 #include "motoflex/fit/effect_parameters.hpp"
 #include "motoflex/fit/fit_run.hpp"
 #include "motoflex/fit/refit_config.hpp"
@@ -22,6 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kMinExplained = 1e-3;  // a signature that explains less is not refit
+constexpr const char* kDiscovered = "discovered_torque";
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -70,11 +72,19 @@ Evaluated evaluate(FinishedFit fit) {
 // and the refit starts at the better of the two. `start_rollouts` counts the rollouts this
 // took. A refit dir that already has its fit.yaml (a loop run again) keeps it, so the refit
 // resumes unchanged.
-std::string write_refit(const Evaluated& current, const EffectScore& candidate,
+// The effect to add and where its refit starts (the signature regression's or the discovery's
+// linearised optimum).
+struct RefitStart {
+  const Effect* effect = nullptr;
+  std::vector<std::pair<std::string, double>> estimate;   // effect parameters
+  std::vector<std::pair<std::string, double>> fit_start;  // the fit's free parameters
+};
+
+std::string write_refit(const Evaluated& current, const RefitStart& candidate,
                         const std::string& dir, std::uint64_t* start_rollouts) {
   const fs::path yaml = fs::path(dir) / "fit.yaml";
   if (fs::exists(yaml)) return yaml.string();
-  const Effect& effect = find_effect(candidate.effect);
+  const Effect& effect = *candidate.effect;
   const auto training_fitness = [&](const nlohmann::json& free) {
     const FitConfig config = load_fit_config(
         write_refit_config(current.fit.config, free, effect, candidate.estimate, dir));
@@ -131,11 +141,11 @@ std::vector<const EffectScore*> refit_candidates(const EffectRanking& ranking,
 }
 
 // Refits the current model with one candidate effect and judges it on the validation logs.
-LoopRefit refit_with(const Evaluated& current, const EffectScore& candidate, const std::string& dir,
+LoopRefit refit_with(const Evaluated& current, const RefitStart& candidate, const std::string& dir,
                      const LoopOptions& options, LoopResult& result,
                      std::vector<Evaluated>& refits) {
   const std::string yaml = write_refit(current, candidate, dir, &result.probe_rollouts);
-  std::printf("loop: refit with %s -> %s\n", candidate.effect.c_str(), dir.c_str());
+  std::printf("loop: refit with %s -> %s\n", candidate.effect->name.c_str(), dir.c_str());
   std::fflush(stdout);
   FitConfig config = load_fit_config(yaml);
   config.loop = options;
@@ -144,7 +154,7 @@ LoopRefit refit_with(const Evaluated& current, const EffectScore& candidate, con
   const Evaluated& refit = refits.back();
   account(result, refit.fit);
   LoopRefit row;
-  row.effect = candidate.effect;
+  row.effect = candidate.effect->name;
   row.run_dir = dir;
   row.train_rms_deg = refit.train.rms_deg;
   row.val_rms_deg = refit.validation.rms_deg;
@@ -174,6 +184,37 @@ void record_errors_after(const Evaluated& model, LoopIteration& step) {
   step.val_imu_rms_after_deg = imu_rms_deg(model.validation);
 }
 
+// No library effect helped: discover candidate torque terms on the residual and refit with
+// them (their refit is step.refits.back()). Returns the terms (empty: none supported, no refit).
+std::vector<DiscoveredTerm> discover_and_refit(std::size_t iteration, const fs::path& out,
+                                               const LoopOptions& options, const Evaluated& current,
+                                               LoopIteration& step, LoopResult& result,
+                                               std::vector<Evaluated>& refits) {
+  const auto start = std::chrono::steady_clock::now();
+  const TermDiscovery discovery = discover_terms(
+      current.fit.config, current.fit.best, current.fit.config.threads, options.discover_terms);
+  result.probe_rollouts += discovery.probe_rollouts;
+  step.discovery_explained = discovery.explained;
+  step.discovery_delta_bic = discovery.delta_bic;
+  if (discovery.terms.empty()) {
+    std::printf("loop: discovery (%.1f s, %zu candidates): no sparse term supported\n",
+                seconds_since(start), discovery.candidates);
+    return {};
+  }
+  ParameterSet proposal = current.fit.best;
+  for (const auto& [name, value] : discovery.estimate) proposal.set(name, value);
+  step.discovery_proposal = discovered_formula(discovery.terms, proposal);
+  std::printf("loop: discovery (%.1f s, %zu candidates): %s (explains %.3g, dBIC %.3g)\n",
+              seconds_since(start), discovery.candidates, step.discovery_proposal.c_str(),
+              discovery.explained, discovery.delta_bic);
+  std::fflush(stdout);
+  const Effect effect = discovered_effect(discovery.terms);
+  const RefitStart refit{&effect, discovery.estimate, discovery.fit_start};
+  step.refits.push_back(refit_with(current, refit, iteration_dir(out, iteration, kDiscovered),
+                                   options, result, refits));
+  return discovery.terms;
+}
+
 // One iteration: rank, refit the top candidates, keep the best significant one. Returns false
 // when nothing was added (the loop stops).
 bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions& options,
@@ -191,8 +232,18 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
   refits.reserve(candidates.size());
   for (const EffectScore* candidate : candidates) {
     const std::string dir = iteration_dir(out, iteration, candidate->effect);
-    step.refits.push_back(refit_with(current, *candidate, dir, options, result, refits));
+    const RefitStart start{&find_effect(candidate->effect), candidate->estimate,
+                           candidate->fit_start};
+    step.refits.push_back(refit_with(current, start, dir, options, result, refits));
     if (step.refits.back().significant &&
+        (!winner || refits.back().validation.bic < refits[*winner].validation.bic)) {
+      winner = refits.size() - 1;
+    }
+  }
+  std::vector<DiscoveredTerm> discovered;
+  if ((!winner || options.discover_always) && options.discover_terms > 0) {
+    discovered = discover_and_refit(iteration, out, options, current, step, result, refits);
+    if (!discovered.empty() && step.refits.back().significant &&
         (!winner || refits.back().validation.bic < refits[*winner].validation.bic)) {
       winner = refits.size() - 1;
     }
@@ -207,6 +258,10 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
   model.push_back(step.added_effect);
   Evaluated& best = refits[*winner];
   record_errors_after(best, step);
+  if (step.added_effect == kDiscovered) {
+    step.discovered_formula = discovered_formula(discovered, best.fit.best);
+    std::printf("loop: discovered %s\n", step.discovered_formula.c_str());
+  }
   std::printf("loop: added %s\n", step.added_effect.c_str());
   result.iterations.push_back(std::move(step));
   best.fit.config.loop = options;

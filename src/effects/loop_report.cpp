@@ -145,6 +145,12 @@ nlohmann::ordered_json iteration_json(const LoopIteration& it) {
   item["ranking_detail"] = ranking_json(it.ranking);
   item["added_effect"] = it.added_effect.empty() ? nlohmann::ordered_json(nullptr)
                                                  : nlohmann::ordered_json(it.added_effect);
+  if (!it.discovery_proposal.empty()) {
+    item["discovery"] = {{"proposal", it.discovery_proposal},
+                         {"explained", it.discovery_explained},
+                         {"delta_bic", it.discovery_delta_bic}};
+  }
+  if (!it.discovered_formula.empty()) item["discovered_formula"] = it.discovered_formula;
   item["fitted"] = it.fitted;
   item["train_rms_before"] = it.train_rms_before_deg;
   item["train_rms_after"] = it.train_rms_after_deg;
@@ -211,6 +217,7 @@ void write_loop_summary(std::ostringstream& md, const LoopResult& result, const 
   for (const auto& it : result.iterations) {
     if (it.added_effect.empty()) continue;
     md << (any ? ", " : "") << it.added_effect;
+    if (!it.discovered_formula.empty()) md << " (" << it.discovered_formula << ")";
     any = true;
   }
   md << (any ? "" : "nothing") << ".\n\n";
@@ -253,6 +260,13 @@ void write_loop_iterations(std::ostringstream& md, const LoopResult& result) {
          << format("%.4f", r.val_rms_deg) << " | " << format("%.1f", r.val_bic) << " | "
          << r.free_parameters << " | " << r.evaluations << " | " << format("%.1f", r.seconds)
          << " | " << (r.significant ? "yes" : "no") << " |\n";
+    }
+    if (!it.discovery_proposal.empty()) {
+      md << "\nNo library effect helped; discovery proposed " << it.discovery_proposal
+         << " (linearised; explains " << format("%.3g", it.discovery_explained)
+         << " of the residual, ΔBIC " << format("%.3g", it.discovery_delta_bic) << ")"
+         << (it.discovered_formula.empty() ? ".\n"
+                                           : "; after the refit: " + it.discovered_formula + ".\n");
     }
   }
 }

@@ -86,7 +86,8 @@ PolishSpec read_polish(const YamlValue& node) {
 }
 
 LoopOptions read_loop(const YamlValue& node) {
-  node.require_keys_within({"candidates", "max_iterations", "min_gain", "effects", "refit"});
+  node.require_keys_within({"candidates", "max_iterations", "min_gain", "effects", "refit",
+                            "discover_terms", "discover_always"});
   LoopOptions loop;
   const int candidates = node.get_int("candidates", static_cast<int>(loop.candidates));
   if (candidates < 1) node.at("candidates").fail("must be >= 1");
@@ -98,6 +99,10 @@ LoopOptions read_loop(const YamlValue& node) {
   if (!(loop.min_gain >= 0.0 && loop.min_gain < 1.0)) {
     node.at("min_gain").fail("must be in [0, 1)");
   }
+  const int discover = node.get_int("discover_terms", 0);
+  if (discover < 0) node.at("discover_terms").fail("must be >= 0");
+  loop.discover_terms = static_cast<std::size_t>(discover);
+  loop.discover_always = node.get_bool("discover_always", false);
   if (const auto effects = node.find("effects")) {
     for (const YamlValue& item : effects->items()) {
       find_effect(item.as_string(), item.file(), item.line(), item.field());

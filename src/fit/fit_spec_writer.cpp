@@ -115,6 +115,8 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
                  {"max_iterations", spec.loop.max_iterations},
                  {"min_gain", spec.loop.min_gain},
                  {"effects", spec.loop.effects},
+                 {"discover_terms", spec.loop.discover_terms},
+                 {"discover_always", spec.loop.discover_always},
                  {"refit",
                   {{"strategy", strategy_to_json(spec.loop.refit_strategy)},
                    {"budget", budget_json(spec.loop.refit_budget)}}}};

@@ -54,7 +54,13 @@ FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, con
     spec.free.push_back(free_spec(p, start));
   }
   spec.effects = from.effects;
-  if (std::find(spec.effects.begin(), spec.effects.end(), effect.name) == spec.effects.end()) {
+  // An effect built on the fly (the loop's discovered terms) is not listed: its parameters are
+  // in `free` above, and `effects:` names library entries only.
+  const auto& library = effect_library();
+  const bool in_library = std::any_of(library.begin(), library.end(),
+                                      [&](const Effect& e) { return e.name == effect.name; });
+  if (in_library &&
+      std::find(spec.effects.begin(), spec.effects.end(), effect.name) == spec.effects.end()) {
     spec.effects.push_back(effect.name);
   }
   spec.fitness_m = from.fitness_m;

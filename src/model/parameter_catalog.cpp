@@ -5,6 +5,7 @@
 
 #include "motoflex/model/joint_units.hpp"
 #include "motoflex/model/parameter_domain.hpp"
+#include "motoflex/model/torque_terms.hpp"
 
 namespace motoflex::detail {
 
@@ -49,6 +50,21 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
     add(joint + "load_friction_quad" + per, 0.0, 0.0, 0.01);
     add(joint + "load_friction_external_quad" + per, 0.0, 0.0, 0.01);
     add(joint + "friction_model", 6.0, 1.0, 6.0);
+  }
+  // Appended: the loop's candidate torque terms and the hidden truths' extra torques
+  // (torque_terms.hpp), all neutral.
+  const TruthTorques truth;
+  for (const auto& a : model.actuators) {
+    for (const TorqueTerm& term : torque_terms()) {
+      add(term_parameter(a.name, term.leaf), 0.0, -term.bound, term.bound);
+    }
+    const std::string joint = "joint." + a.name + ".";
+    add(joint + "cogging_nm", truth.cogging_nm, 0.0, 1.0);
+    add(joint + "cogging_periods", truth.cogging_periods, 1.0, 64.0);
+    add(joint + "cogging_phase_rad", truth.cogging_phase_rad, -4.0, 4.0);
+    add(joint + "drag_nm_s2_per_rad2", truth.drag_nm_s2_per_rad2, 0.0, 1.0);
+    add(joint + "load_saturation_nm", truth.load_saturation_nm, 0.0, 2.0);
+    add(joint + "load_saturation_scale_nm", truth.load_saturation_scale_nm, 0.01, 5.0);
   }
   return specs;
 }
@@ -107,6 +123,11 @@ const DomainRule kDomainRules[] = {
     {"load_friction_quad_per_nm", false, kNonNegative},
     {"load_friction_external_quad_per_nm", false, kNonNegative},
     {"friction_model", false, {1.0, 6.0, false, false, true}},  // BAM's M1-M6
+    {"cogging_nm", false, kNonNegative},
+    {"cogging_periods", false, kPositive},
+    {"drag_nm_s2_per_rad2", false, kNonNegative},
+    {"load_saturation_nm", false, kNonNegative},
+    {"load_saturation_scale_nm", false, kPositive},
     {"resolution_bits", false, {0.0, 32.0, false, false, true}},
     {"noise_rad", false, kNonNegative},
     {"delay_s", false, kNonNegative},

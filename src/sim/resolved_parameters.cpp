@@ -41,7 +41,40 @@ std::string encoder_offset_name(const ActuatorSpec& a) {
   return joint_parameter(a, "encoder_offset", joint_units(a).position);
 }
 
+JointTorqueTerms read_torque_terms(const ParameterReader& get, const std::string& joint) {
+  JointTorqueTerms out;
+  for (const TorqueTerm& term : torque_terms()) {
+    const double coefficient = get(term_parameter(joint, term.leaf));
+    if (coefficient != 0.0) out.terms.emplace_back(&term, coefficient);
+  }
+  const std::string prefix = "joint." + joint + ".";
+  TruthTorques& t = out.truth;
+  t.cogging_nm = get(prefix + "cogging_nm");
+  t.cogging_periods = get(prefix + "cogging_periods");
+  t.cogging_phase_rad = get(prefix + "cogging_phase_rad");
+  t.drag_nm_s2_per_rad2 = get(prefix + "drag_nm_s2_per_rad2");
+  t.load_saturation_nm = get(prefix + "load_saturation_nm");
+  t.load_saturation_scale_nm = get(prefix + "load_saturation_scale_nm");
+  if (t.load_saturation_nm != 0.0 && !(t.load_saturation_scale_nm > 0.0)) {
+    throw ModelError(prefix + "load_saturation_scale_nm must be positive");
+  }
+  return out;
+}
+
 }  // namespace
+
+bool JointTorqueTerms::uses_load() const {
+  for (const auto& [term, coefficient] : terms) {
+    if (term->uses_load) return true;
+  }
+  return truth.load_saturation_nm != 0.0;
+}
+
+double JointTorqueTerms::torque_nm(const TermState& state) const {
+  double sum_nm = truth.active() ? truth_torque_nm(truth, state) : 0.0;
+  for (const auto& [term, coefficient] : terms) sum_nm += coefficient * term_value(*term, state);
+  return sum_nm;
+}
 
 std::vector<std::string> rollout_wide_parameter_names(const RobotModel& model,
                                                       bool point_mass_arm) {
@@ -49,6 +82,13 @@ std::vector<std::string> rollout_wide_parameter_names(const RobotModel& model,
   for (const auto& a : model.actuators) {
     names.push_back("joint." + a.name + ".encoder_scale");
     names.push_back(encoder_offset_name(a));
+  }
+  for (const auto& a : model.actuators) {
+    for (const TorqueTerm& term : torque_terms())
+      names.push_back(term_parameter(a.name, term.leaf));
+    for (const std::string& leaf : truth_torque_leaves()) {
+      names.push_back("joint." + a.name + "." + leaf);
+    }
   }
   if (point_mass_arm)
     names.insert(names.end(), std::begin(kBenchLoadNames), std::end(kBenchLoadNames));
@@ -69,6 +109,7 @@ ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSe
   for (std::size_t i = 0; i < model.actuators.size(); ++i) {
     const std::string joint = "joint." + model.actuators[i].name + ".";
     out.encoders[i] = {get(joint + "encoder_scale"), get(encoder_offset_name(model.actuators[i]))};
+    out.torque_terms.push_back(read_torque_terms(get, model.actuators[i].name));
   }
   if (point_mass_arm) {
     out.bench_load = {get("bench.mass_kg"), get("bench.length_m"), get("bench.armature_kg_m2")};

@@ -10,6 +10,7 @@
 
 #include "motoflex/model/parameters.hpp"
 #include "motoflex/model/robot_model.hpp"
+#include "motoflex/model/torque_terms.hpp"
 #include "motoflex/sim/actuator/servo_law.hpp"
 #include "motoflex/sim/joint_encoder.hpp"
 
@@ -41,6 +42,16 @@ struct BenchLoad {
   double armature_kg_m2 = 0.0;
 };
 
+// The extra torques of one actuated joint (torque_terms.hpp): the discovered terms with a
+// non-zero coefficient and the truth-side torques.
+struct JointTorqueTerms {
+  std::vector<std::pair<const TorqueTerm*, double>> terms;  // term, coefficient
+  TruthTorques truth;
+  bool active() const { return !terms.empty() || truth.active(); }
+  bool uses_load() const;
+  double torque_nm(const TermState& state) const;
+};
+
 struct ResolvedParameters {
   std::vector<EncoderCalibration> encoders;  // model actuator order
   FlexParameters flex;
@@ -48,7 +59,8 @@ struct ResolvedParameters {
   double world_erp = 0.2;
   double world_cfm = 1e-10;
   EncoderParams encoder;
-  BenchLoad bench_load;  // laws with a point-mass arm only
+  BenchLoad bench_load;                        // laws with a point-mass arm only
+  std::vector<JointTorqueTerms> torque_terms;  // model actuator order
 };
 
 // Reads the rollout-wide values (plus the bench arm when the first actuator's law has one,

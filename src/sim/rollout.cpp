@@ -369,7 +369,7 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
       detail::set_axis_motor_param(axis_rows[i].friction, dParamVel, 0.0);
       detail::set_axis_motor_param(axis_rows[i].friction, dParamFMax, 0.0);
     }
-    if (servo.needs_external_torque()) {
+    if (servo.needs_external_torque() || params.torque_terms[i].uses_load()) {
       axis_rows[i].external_torque = true;
       for (const int b : detail::moved_bodies(model, spec.joint)) {
         if (bodies[b] != nullptr) axis_rows[i].load_bodies.push_back(bodies[b]);
@@ -509,6 +509,13 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
       const ActuatorSpec& spec = model.actuators[i];
       const double explicit_nm = out.torque_nm + out.damping_offset_nm;
       (spec.axis == 1 ? joint_torque1 : joint_torque2)[spec.joint] += axis.sign * explicit_nm;
+    }
+    if (params.torque_terms[i].active()) {
+      const TermState state{input.angle_rad, input.command_rad - input.angle_rad, input.rate_rad_s,
+                            input.external_torque_nm};
+      const ActuatorSpec& spec = model.actuators[i];
+      (spec.axis == 1 ? joint_torque1 : joint_torque2)[spec.joint] +=
+          axis.sign * params.torque_terms[i].torque_nm(state);
     }
   }
   for (std::size_t j = 0; j < joints.size(); ++j) {

@@ -38,8 +38,13 @@ struct LoopIteration {
   std::string model_run_dir;  // the fit whose residual was ranked
   EffectRanking ranking;
   std::vector<LoopRefit> refits;
-  std::string added_effect;  // empty: nothing helped
-  nlohmann::json fitted;     // free parameter → value of the fit after this iteration
+  std::string added_effect;  // empty: nothing helped; "discovered_torque": discovered terms
+  // When no library effect helped and discovery ran: what it proposed (formula with the
+  // linearised estimates), its score, and the refit's formula when it was added.
+  std::string discovery_proposal;
+  double discovery_explained = 0.0, discovery_delta_bic = 0.0;
+  std::string discovered_formula;
+  nlohmann::json fitted;  // free parameter → value of the fit after this iteration
   double train_rms_before_deg = 0.0, train_rms_after_deg = 0.0;
   double val_rms_before_deg = 0.0, val_rms_after_deg = 0.0;
   double val_mae_before_rad = 0.0, val_mae_after_rad = 0.0;

@@ -82,7 +82,13 @@ struct LoopOptions {
   // BIC (n·ln MSE + k·ln n, over the same channels) beats the current model's.
   double min_gain = 0.05;
   std::vector<std::string> effects;  // candidates considered (empty: the whole library)
-  StrategyConfig refit_strategy;     // the short warm-started refits
+  // When no library effect helps: discover at most this many candidate torque terms by sparse
+  // regression (term_discovery.hpp) and refit with them; 0 = off.
+  std::size_t discover_terms = 0;
+  // Discover in every iteration, the terms' refit competing with the library candidates on the
+  // validation BIC (a library effect that only half-fits the residual is then not added first).
+  bool discover_always = false;
+  StrategyConfig refit_strategy;  // the short warm-started refits
   FitBudget refit_budget;
   LoopOptions() {
     refit_strategy.kind = "cma_es";

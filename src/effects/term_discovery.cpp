@@ -1,0 +1,395 @@
+#include "motoflex/effects/term_discovery.hpp"
+
+#include <omp.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "linearised_residual.hpp"
+#include "motoflex/model/torque_terms.hpp"
+
+namespace motoflex {
+namespace {
+
+using detail::Residual;
+
+constexpr double kTermProbeFraction = 0.05;  // probe step of a coefficient, of its bound
+constexpr double kRidge = 1e-6;              // on the standardised normal equations
+// Thresholds of the STLSQ path, as fractions of the largest standardised term coefficient.
+constexpr double kThresholds[] = {0.7, 0.5, 0.35, 0.25, 0.15, 0.1, 0.05, 0.02};
+constexpr int kStlsqSweeps = 10;
+// A proposal must lower the training fitness by this fraction (checked with rollouts).
+constexpr double kMinTrainingGain = 0.05;
+constexpr double kLineSearch[] = {0.5, 1.0, 2.0};
+
+// One candidate column: a term on one joint, its response to a probe step of `step_coef`.
+struct Candidate {
+  const TorqueTerm* term = nullptr;
+  std::size_t joint = 0;  // actuator index
+  std::string parameter;
+  double current = 0.0, step_coef = 0.0;
+  std::size_t field = 0;  // index into the probe responses (one per term)
+};
+
+// The Gram matrix of [fit Jacobian | candidates] and their products with the residual.
+struct Normal {
+  Eigen::MatrixXd gram;
+  Eigen::VectorXd rhs;
+  std::size_t fit_columns = 0;
+};
+
+// Column value of `col` at (case c, row) for channel i; fit columns are on every channel, a
+// candidate's on its joint's channel and a share of the IMU channels.
+struct ColumnSource {
+  const detail::FitJacobian* jacobian;
+  const std::vector<std::vector<std::vector<double>>>* fields;
+  const std::vector<Candidate>* candidates;
+  std::size_t joints = 0;
+  double value(std::size_t col, std::size_t c, std::size_t row, std::size_t channel) const {
+    const std::size_t p = jacobian->columns.size();
+    if (col < p) return jacobian->columns[col][c][row];
+    const Candidate& cand = (*candidates)[col - p];
+    double scale = 0.0;
+    if (channel == cand.joint) scale = 1.0;
+    if (channel >= joints) scale = 1.0 / static_cast<double>(joints);
+    return scale == 0.0 ? 0.0 : scale * (*fields)[cand.field][c][row];
+  }
+};
+
+Normal normal_equations(const ColumnSource& source, std::size_t columns, const Residual& residual) {
+  Normal out;
+  out.fit_columns = source.jacobian->columns.size();
+  out.gram = Eigen::MatrixXd::Zero(columns, columns);
+  out.rhs = Eigen::VectorXd::Zero(columns);
+  std::vector<double> v(columns);
+  for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
+    for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {
+      for (std::size_t i = 0; i < residual.channels; ++i) {
+        const std::size_t row = f * residual.channels + i;
+        for (std::size_t a = 0; a < columns; ++a) v[a] = source.value(a, c, row, i);
+        for (std::size_t a = 0; a < columns; ++a) {
+          if (v[a] == 0.0) continue;
+          out.rhs(a) += v[a] * residual.r_rad[c][row];
+          for (std::size_t b = a; b < columns; ++b) out.gram(a, b) += v[a] * v[b];
+        }
+      }
+    }
+  }
+  for (std::size_t a = 0; a < columns; ++a) {
+    for (std::size_t b = 0; b < a; ++b) out.gram(a, b) = out.gram(b, a);
+  }
+  return out;
+}
+
+// Least squares on the fit columns plus the candidates in `active` (indices into candidates),
+// in standardised units (each column scaled to unit norm). Returns the coefficients (fit
+// columns first) in the original units and the residual sum of squares.
+Eigen::VectorXd solve_subset(const Normal& n, const std::vector<std::size_t>& active, double rr,
+                             double* rss) {
+  std::vector<std::size_t> cols;
+  for (std::size_t a = 0; a < n.fit_columns; ++a) cols.push_back(a);
+  for (const std::size_t a : active) cols.push_back(n.fit_columns + a);
+  const Eigen::Index k = static_cast<Eigen::Index>(cols.size());
+  Eigen::MatrixXd g(k, k);
+  Eigen::VectorXd b(k), scale(k);
+  for (Eigen::Index i = 0; i < k; ++i) {
+    scale(i) = std::sqrt(std::max(n.gram(cols[i], cols[i]), 1e-300));
+  }
+  for (Eigen::Index i = 0; i < k; ++i) {
+    b(i) = n.rhs(cols[i]) / scale(i);
+    for (Eigen::Index j = 0; j < k; ++j) g(i, j) = n.gram(cols[i], cols[j]) / (scale(i) * scale(j));
+  }
+  g.diagonal().array() += kRidge;
+  const Eigen::VectorXd beta_std = k == 0 ? Eigen::VectorXd() : Eigen::VectorXd(g.ldlt().solve(b));
+  *rss = rr - (k == 0 ? 0.0 : 2.0 * beta_std.dot(b) - beta_std.dot(g * beta_std));
+  return beta_std.cwiseQuotient(scale);
+}
+
+// Sequentially thresholded least squares from the full candidate set: drop the candidates
+// whose standardised coefficient is below `threshold` × the largest, refit, repeat.
+std::vector<std::size_t> stlsq(const Normal& n, std::size_t candidates, double threshold,
+                               double rr) {
+  std::vector<std::size_t> active(candidates);
+  for (std::size_t a = 0; a < candidates; ++a) active[a] = a;
+  for (int sweep = 0; sweep < kStlsqSweeps && !active.empty(); ++sweep) {
+    double rss = 0.0;
+    const Eigen::VectorXd beta = solve_subset(n, active, rr, &rss);
+    std::vector<double> size(active.size());
+    double largest = 0.0;
+    for (std::size_t i = 0; i < active.size(); ++i) {
+      const std::size_t col = n.fit_columns + active[i];
+      size[i] = std::abs(beta(static_cast<Eigen::Index>(n.fit_columns + i))) *
+                std::sqrt(n.gram(col, col));
+      largest = std::max(largest, size[i]);
+    }
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < active.size(); ++i) {
+      if (size[i] >= threshold * largest) kept.push_back(active[i]);
+    }
+    if (kept.size() == active.size()) break;
+    active = std::move(kept);
+  }
+  return active;
+}
+
+std::vector<Candidate> candidates_of(const FitConfig& config, const ParameterSet& current) {
+  std::set<std::string> free_names;
+  for (const auto& p : config.free_parameters)
+    free_names.insert(p.targets.begin(), p.targets.end());
+  const RobotModel& model = config.train->model();
+  std::vector<Candidate> out;
+  std::size_t field = 0;
+  for (const TorqueTerm& term : torque_terms()) {
+    bool any = false;
+    for (std::size_t j = 0; j < model.actuators.size(); ++j) {
+      const std::string name = term_parameter(model.actuators[j].name, term.leaf);
+      if (free_names.count(name) != 0 || !model.parameters.find(name)) continue;
+      out.push_back({&term, j, name, current.get(name), kTermProbeFraction * term.bound, field});
+      any = true;
+    }
+    if (any) ++field;
+  }
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+// The responses of the simulated channels to a probe step of each term's coefficients (all
+// joints of a term at once), in term (field) order.
+std::vector<std::vector<std::vector<double>>> term_responses(
+    const FitConfig& config, const ParameterSet& current, const std::vector<Candidate>& candidates,
+    const Residual& residual, int threads) {
+  std::size_t fields = 0;
+  for (const Candidate& c : candidates) fields = std::max(fields, c.field + 1);
+  std::vector<std::vector<std::vector<double>>> out(fields);
+  const int n = static_cast<int>(fields);
+#pragma omp parallel for schedule(dynamic) num_threads(std::max(threads, 1))
+  for (int f = 0; f < n; ++f) {
+    ParameterSet moved = current;
+    for (const Candidate& c : candidates) {
+      if (c.field == static_cast<std::size_t>(f)) moved.set(c.parameter, c.current + c.step_coef);
+    }
+    out[f] = detail::response(*config.train, moved, residual);
+  }
+  return out;
+}
+
+// Forward selection: the supports of 1..max_terms candidates, each adding the candidate that
+// lowers the RSS most (robust where the full least squares of many collinear candidates, which
+// STLSQ starts from, is not).
+std::vector<std::vector<std::size_t>> forward_supports(const Normal& n, std::size_t candidates,
+                                                       double rr, std::size_t max_terms) {
+  std::vector<std::vector<std::size_t>> out;
+  std::vector<std::size_t> active;
+  while (active.size() < std::min(max_terms, candidates)) {
+    double best_rss = std::numeric_limits<double>::infinity();
+    std::size_t best = candidates;
+    for (std::size_t a = 0; a < candidates; ++a) {
+      if (std::find(active.begin(), active.end(), a) != active.end()) continue;
+      std::vector<std::size_t> trial = active;
+      trial.push_back(a);
+      double rss = 0.0;
+      solve_subset(n, trial, rr, &rss);
+      if (rss < best_rss) best_rss = rss, best = a;
+    }
+    active.push_back(best);
+    std::vector<std::size_t> sorted = active;
+    std::sort(sorted.begin(), sorted.end());
+    out.push_back(sorted);
+  }
+  return out;
+}
+
+struct Support {
+  std::vector<std::size_t> active;
+  double rss = 0.0, delta_bic = 0.0;
+  Eigen::VectorXd beta;
+};
+
+// The supports of 1..max_terms candidates on the forward and the STLSQ paths, and every single
+// candidate, by ΔBIC (best first). With a smooth residual N_eff is a handful of samples and the
+// ΔBIC a weak screen: the rollouts (proposal_fitness) and the refit's validation decide.
+std::vector<Support> supported(const Normal& n, std::size_t candidates, double rr, double rss_base,
+                               double n_eff, std::size_t max_terms) {
+  std::set<std::vector<std::size_t>> seen;
+  std::vector<std::vector<std::size_t>> supports = forward_supports(n, candidates, rr, max_terms);
+  for (const double threshold : kThresholds) {
+    supports.push_back(stlsq(n, candidates, threshold, rr));
+  }
+  for (std::size_t a = 0; a < candidates; ++a) supports.push_back({a});
+  std::vector<Support> out;
+  for (const std::vector<std::size_t>& active : supports) {
+    if (active.empty() || active.size() > max_terms || !seen.insert(active).second) continue;
+    Support s;
+    s.active = active;
+    s.beta = solve_subset(n, active, rr, &s.rss);
+    const double rss1 = std::clamp(s.rss, 1e-300, rss_base);
+    s.delta_bic = n_eff * std::log(rss1 / std::max(rss_base, 1e-300)) +
+                  static_cast<double>(active.size()) * std::log(n_eff);
+    out.push_back(std::move(s));
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const Support& a, const Support& b) { return a.delta_bic < b.delta_bic; });
+  return out;
+}
+
+// What a support proposes: its terms at the linearised estimate, and the fit's parameters
+// after the same step.
+TermDiscovery proposal(const Support& best, const std::vector<Candidate>& candidates,
+                       const Normal& n, const detail::FitJacobian& jacobian,
+                       const FitConfig& config) {
+  TermDiscovery out;
+  out.delta_bic = best.delta_bic;
+  for (std::size_t i = 0; i < best.active.size(); ++i) {
+    const Candidate& c = candidates[best.active[i]];
+    const double beta = best.beta(static_cast<Eigen::Index>(n.fit_columns + i));
+    const double value = std::clamp(c.current + beta * c.step_coef, -c.term->bound, c.term->bound);
+    out.terms.push_back(
+        {c.parameter, config.train->model().actuators[c.joint].name, c.term->formula, value});
+    out.estimate.emplace_back(c.parameter, value);
+  }
+  const ParameterSpace& space = *config.space;
+  for (std::size_t i = 0; i < n.fit_columns; ++i) {
+    const detail::Direction& d = jacobian.directions[i];
+    const double coordinate =
+        std::clamp(d.current + best.beta(static_cast<Eigen::Index>(i)) * d.step, d.lower, d.upper);
+    out.fit_start.emplace_back(space.free_parameters()[i].name, space.to_model(i, coordinate));
+  }
+  return out;
+}
+
+// The training fitness of a proposal's terms added to `current` (the fit's own parameters
+// kept): the nonlinear check of the linearised choice. Where collinear candidates fit the
+// linearised residual about equally, the one the rollouts confirm wins.
+double proposal_fitness(const TermDiscovery& p, const FitConfig& config,
+                        const ParameterSet& current, bool move_fit, double scale) {
+  ParameterSet trial = current;
+  for (const auto& [name, value] : p.estimate) {
+    trial.set(name, current.get(name) + scale * (value - current.get(name)));
+  }
+  if (move_fit) {
+    const ParameterSpace& space = *config.space;
+    for (std::size_t i = 0; i < p.fit_start.size(); ++i) {
+      const double from = current.get(space.free_parameters()[i].targets.front());
+      for (const auto& target : space.free_parameters()[i].targets) {
+        trial.set(target, from + scale * (p.fit_start[i].second - from));
+      }
+    }
+  }
+  return config.train->evaluate(trial).fitness;
+}
+
+// The proposal's step scaled by the best of kLineSearch (the linearised size of a term's
+// coefficient can be far off where the response is not linear), with the fit's parameters kept
+// or moved: `p` is updated to that step; returns its training fitness and counts the rollouts.
+double line_search(TermDiscovery& p, const FitConfig& config, const ParameterSet& current,
+                   std::size_t* rollouts) {
+  double best = std::numeric_limits<double>::infinity();
+  double best_scale = 1.0;
+  bool best_moved = false;
+  for (const double scale : kLineSearch) {
+    for (const bool moved : {false, true}) {
+      const double fitness = proposal_fitness(p, config, current, moved, scale);
+      *rollouts += config.train->cases().size();
+      if (fitness < best) best = fitness, best_scale = scale, best_moved = moved;
+    }
+  }
+  for (auto& [name, value] : p.estimate) {
+    value = current.get(name) + best_scale * (value - current.get(name));
+  }
+  for (auto& term : p.terms)
+    term.estimate =
+        current.get(term.parameter) + best_scale * (term.estimate - current.get(term.parameter));
+  if (!best_moved) {
+    p.fit_start.clear();  // the refit then starts from the fit's own values
+  } else {
+    const ParameterSpace& space = *config.space;
+    for (std::size_t i = 0; i < p.fit_start.size(); ++i) {
+      const double from = current.get(space.free_parameters()[i].targets.front());
+      p.fit_start[i].second = from + best_scale * (p.fit_start[i].second - from);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+TermDiscovery discover_terms(const FitConfig& config, const ParameterSet& current, int threads,
+                             std::size_t max_terms) {
+  TermDiscovery out;
+  const Residual residual = detail::residual_of(*config.train, current);
+  const detail::FitJacobian jacobian = detail::fit_jacobian(config, current, residual, threads);
+  const std::vector<Candidate> candidates = candidates_of(config, current);
+  out.candidates = candidates.size();
+  if (candidates.empty() || residual.rss <= 0.0) return out;
+  const auto fields = term_responses(config, current, candidates, residual, threads);
+  const std::size_t cases = config.train->cases().size();
+  out.probe_rollouts = (jacobian.columns.size() + fields.size() + 1) * cases;
+  const ColumnSource source{&jacobian, &fields, &candidates,
+                            config.train->model().actuators.size()};
+  const Normal n = normal_equations(source, jacobian.columns.size() + candidates.size(), residual);
+  double rss_base = residual.rss;
+  solve_subset(n, {}, residual.rss, &rss_base);
+  const std::vector<Support> supports = supported(n, candidates.size(), residual.rss, rss_base,
+                                                  residual.effective_samples, max_terms);
+  double best_fitness = (1.0 - kMinTrainingGain) * config.train->evaluate(current).fitness;
+  std::size_t rollouts = out.probe_rollouts + cases;
+  for (const Support& s : supports) {
+    TermDiscovery p = proposal(s, candidates, n, jacobian, config);
+    const double fitness = line_search(p, config, current, &rollouts);
+    if (fitness < best_fitness) {
+      best_fitness = fitness;
+      p.explained = (rss_base - std::clamp(s.rss, 0.0, rss_base)) / residual.rss;
+      p.candidates = out.candidates;
+      out = std::move(p);
+    }
+  }
+  out.probe_rollouts = rollouts;
+  return out;
+}
+
+Effect discovered_effect(const std::vector<DiscoveredTerm>& terms) {
+  Effect effect{"discovered_torque",
+                "a joint torque found by sparse regression on candidate terms",
+                "a sparse combination of candidate torques (torque_terms.hpp)",
+                {},
+                false,
+                0};
+  for (const DiscoveredTerm& term : terms) {
+    const TorqueTerm* t = find_torque_term(term.parameter);
+    const double bound = t != nullptr ? t->bound : 1.0;
+    effect.parameters.push_back({term.parameter, true, false, -bound, bound, kTermProbeFraction});
+  }
+  return effect;
+}
+
+std::string discovered_formula(const std::vector<DiscoveredTerm>& terms,
+                               const ParameterSet& values) {
+  std::map<std::string, std::string> per_joint;
+  for (const DiscoveredTerm& term : terms) {
+    const double c = values.get(term.parameter);
+    char text[96];
+    std::string& line = per_joint[term.joint];
+    if (line.empty()) {
+      std::snprintf(text, sizeof text, "%.4g·%s", c, term.formula.c_str());
+    } else {
+      std::snprintf(text, sizeof text, " %s %.4g·%s", c < 0.0 ? "−" : "+", std::abs(c),
+                    term.formula.c_str());
+    }
+    line += text;
+  }
+  std::string out;
+  for (const auto& [joint, line] : per_joint) {
+    out += (out.empty() ? "" : "; ") + ("τ_" + joint + " = " + line + " (SI units)");
+  }
+  return out;
+}
+
+}  // namespace motoflex
