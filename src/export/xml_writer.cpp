@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "motoflex/core/markup_escape.hpp"
+
 namespace motoflex::detail {
 
 std::string format_number(double value) {
@@ -47,27 +49,7 @@ std::string format_rpy(const Eigen::Matrix3d& R) {
 }
 
 std::string xml_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
+  return escape_markup(text);
 }
 
 XmlElement& XmlElement::attribute(const std::string& name, const std::string& value) {
