@@ -51,10 +51,19 @@ TEST(EffectSignature, TheMissingEffectRanksFirstWithItsMagnitude) {
     }
     EXPECT_GT(estimate, 0.3 * c.truth) << c.effect;
     EXPECT_LT(estimate, 3.0 * c.truth) << c.effect;
-    // The runner-up explains far less of what re-tuning the fit's own parameters cannot.
-    ASSERT_GT(ranking.scores.size(), 1u);
-    EXPECT_LT(ranking.scores[1].explained, 0.5 * top.explained) << c.effect;
-    EXPECT_GT(ranking.scores[1].delta_bic, 0.5 * top.delta_bic) << c.effect;
+    // The runner-up explains far less of what re-tuning the fit's own parameters cannot, unless
+    // it contains the missing effect: BAM's load-dependent Stribeck friction (M4) has a Stribeck
+    // term of its own and explains 40 % where Stribeck explains 72 %.
+    const EffectScore* runner_up = nullptr;
+    for (std::size_t k = 1; k < ranking.scores.size() && runner_up == nullptr; ++k) {
+      const bool contains = c.effect == std::string("stribeck") &&
+                            ranking.scores[k].effect == "load_stribeck_friction";
+      if (!contains) runner_up = &ranking.scores[k];
+    }
+    ASSERT_NE(runner_up, nullptr);
+    EXPECT_LT(runner_up->explained, 0.5 * top.explained)
+        << c.effect << ": runner-up " << runner_up->effect;
+    EXPECT_GT(runner_up->delta_bic, 0.5 * top.delta_bic) << c.effect;
   }
 }
 

@@ -1,5 +1,5 @@
 // motoflex loop with open-ended discovery, end to end, on logs whose truth has a torque no
-// library effect models (reference_data/hidden/load_saturation: −0.06·tanh(τ_g / 0.1 N·m)):
+// library effect models (reference_data/hidden/cogging: 0.04·sin(6θ + 0.7) N·m):
 // the loop adds the discovered torque terms, prints them as a formula with the fitted
 // coefficients, and the validation RMS falls by at least half.
 
@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 TEST(DiscoveryLoop, FindsAndFixesATorqueOutsideTheLibrary) {
   const fs::path dir = fresh_dir("loop_discovery");
   const std::string fit = write_hidden_bench_fit(
-      dir, "load_saturation",
+      dir, "cogging",
       "{candidates: 1, max_iterations: 1, min_gain: 0.05, discover_terms: 2, discover_always: "
       "true, refit: {strategy: {kind: cma_es, sigma: 0.1, restarts: 0}, budget: {evaluations: "
       "300}}}");

@@ -49,7 +49,10 @@ inline std::map<std::string, double> fitted_values(const RobotModel& model) {
         s.name.find("stribeck") != std::string::npos ||
         s.name.find("load_friction") != std::string::npos ||
         s.name.find("friction_model") != std::string::npos ||
-        s.name.rfind("motor.R_drift", 0) == 0 || s.name.rfind("motor.supply_sag", 0) == 0) {
+        s.name.rfind("motor.R_drift", 0) == 0 || s.name.rfind("motor.supply_sag", 0) == 0 ||
+        s.name.find(".term_") != std::string::npos || s.name.find("cogging") != std::string::npos ||
+        s.name.find("drag_") != std::string::npos ||
+        s.name.find("load_saturation") != std::string::npos) {
       value = s.default_value;  // effects the exports drop: keep them neutral
     }
     out[s.name] = std::min(std::max(value, s.lower), s.upper);

@@ -20,9 +20,9 @@ nlohmann::json read_json(const fs::path& path) {
   return nlohmann::json::parse(in);
 }
 
-// A pendulum fit of friction and viscous friction plus a coefficient the bench law never reads
-// (BAM's quadratic load term: the bench's law reads only the M1-M5 motor-load terms), stopped
-// by its budget after a few generations.
+// A pendulum fit of friction and viscous friction plus a coefficient nothing reads on this bench
+// (the ground's friction: the arm never touches the ground), stopped by its budget after a few
+// generations.
 fs::path small_unconverged_fit(const std::string& name) {
   const fs::path dir = fresh_dir(name);
   record_pendulum_log(dir / "data", "sin_sin");
@@ -33,7 +33,7 @@ fs::path small_unconverged_fit(const std::string& name) {
   std::string text = read_text(fit);
   text.replace(text.find("  bench.armature_kg_m2"),
                text.find("strategy:") - text.find("  bench.armature_kg_m2"),
-               "  joint.pendulum.load_friction_quad_per_nm: {lower: 0.0, upper: 0.01}\n");
+               "  contact.mu: {lower: 0.5, upper: 1.5}\n");
   write_text(fit, text);
   const CommandResult run = run_motoflex("fit " + fit + " --out " + (dir / "run").string());
   EXPECT_EQ(run.exit_code, 0) << run.stderr_text;
@@ -45,13 +45,11 @@ TEST(FitHygiene, SensitivityNamesTheParameterTheDataCannotDetermine) {
   const nlohmann::json summary = read_json(run / "summary.json");
   EXPECT_FALSE(summary["converged"].get<bool>());
   const nlohmann::json& s = summary["sensitivity"]["parameters"];
-  // The law never reads it: moving it changes nothing, exactly.
-  EXPECT_EQ(s["joint.pendulum.load_friction_quad_per_nm"]["relative_fitness_change_per_bound_width"]
-                .get<double>(),
-            0.0);
-  EXPECT_FALSE(s["joint.pendulum.load_friction_quad_per_nm"]["determined"].get<bool>());
+  // Nothing touches the ground: moving it changes nothing, exactly.
+  EXPECT_EQ(s["contact.mu"]["relative_fitness_change_per_bound_width"].get<double>(), 0.0);
+  EXPECT_FALSE(s["contact.mu"]["determined"].get<bool>());
   ASSERT_EQ(summary["sensitivity"]["undetermined"].size(), 1u);
-  EXPECT_EQ(summary["sensitivity"]["undetermined"][0], "joint.pendulum.load_friction_quad_per_nm");
+  EXPECT_EQ(summary["sensitivity"]["undetermined"][0], "contact.mu");
   // The others move the fitness strongly (measured: K_t 25.9, friction 8.7, viscous 3.7 per
   // bound-width, log scale, two generations from the start): far above the 0.1 threshold.
   for (const char* name :
