@@ -80,7 +80,8 @@ def write_markdown(path, rows, speedup, repeats, seconds):
              "| model | dWorldStep | dWorldQuickStep |", "|---|---|---|"]
     for name, _ in CONFIGS:
         sps = {r["solver"]: r["steps_per_s"] for r in rows if r["configuration"] == name}
-        lines.append(f"| {name} | {sps['step']:,.0f} | {sps['quick']:,.0f} |".replace(",", " "))
+        step, quick = (f"{sps[k]:,.0f}".replace(",", " ") for k in ("step", "quick"))
+        lines.append(f"| {name} | {step} | {quick} |")
     lines += ["", f"4 rollouts of the full Nao pipeline on 2 threads vs 1 thread: speed-up "
               f"{speedup:.2f}x."]
     with open(path, "w") as f:

@@ -95,6 +95,21 @@ const Exporter& check_arguments(const ExportArgs& args) {
 
 // Writes the file (atomically) with its meshes and returns what its parser complained about
 // ("" = accepted).
+// Torque terms found by the loop's discovery (joint.<J>.term_*) act only in motoflex's rollout:
+// no exported format has a place for them but the JSON, so a file that drops them is said so.
+void warn_dropped_discovered_terms(const ParameterSet& parameters, const std::string& format) {
+  if (format == "json") return;
+  const ParameterRegistry& registry = parameters.registry();
+  for (std::size_t i = 0; i < registry.size(); ++i) {
+    const std::string& name = registry.spec(i).name;
+    if (name.find(".term_") == std::string::npos || parameters.get(i) == 0.0) continue;
+    std::fprintf(stderr,
+                 "motoflex: warning: %s = %g: a discovered torque term, which the %s export "
+                 "drops (only the json export keeps it)\n",
+                 name.c_str(), parameters.get(i), format.c_str());
+  }
+}
+
 std::string write_checked_file(const Exporter& exporter, const ExportInput& input,
                                const ExportArgs& args, ExportedFile& file) {
   ExportOptions options;
@@ -117,6 +132,7 @@ int run(const ExportArgs& args) {
   }
   ExportInput input{model, ParameterSet(model.parameters), servo, {}, args.dt_s};
   input.provenance = read_fitted_parameters(args.parameters, model.name, input.parameters);
+  warn_dropped_discovered_terms(input.parameters, args.format);
 
   // The check's log may carry per-log conditions (a bench's mass or firmware gain): the export
   // is then made for those conditions, so that the file checked is the file written.

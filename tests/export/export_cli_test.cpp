@@ -34,6 +34,24 @@ std::string write_chirp_log(const std::filesystem::path& dir) {
   return path;
 }
 
+TEST(ExportCli, SaysWhenItDropsADiscoveredTorqueTerm) {
+  const auto dir = testing::fresh_export_dir("cli_terms");
+  const auto model = testing::load_robot("servo_pendulum");
+  auto values = testing::fitted_values(*model);
+  values["joint.pendulum.term_sin6"] = 0.03;  // what the loop's discovery fits for cogging
+  const std::string best = testing::write_best_json(dir, *model, values);
+  const std::string robot = testing::robot_dir("servo_pendulum");
+  for (const std::string format : {"json", "mjcf", "sdf", "urdf"}) {
+    const auto r = run_motoflex("export " + best + " --robot " + robot + " --format " + format +
+                                " --out " + (dir / ("pendulum." + format)).string());
+    ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+    const bool warned =
+        r.stderr_text.find("warning: joint.pendulum.term_sin6 = 0.03: a discovered torque term") !=
+        std::string::npos;
+    EXPECT_EQ(warned, format != "json") << format << ": " << r.stderr_text;
+  }
+}
+
 TEST(ExportCli, WritesEveryFormatAndChecksMujoco) {
   const auto dir = testing::fresh_export_dir("cli");
   const auto model = testing::load_robot("servo_pendulum");
