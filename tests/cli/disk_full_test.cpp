@@ -36,6 +36,20 @@ int temp_files_in(const fs::path& dir) {
   return count;
 }
 
+// A two-generation pendulum fit into `run` with every file limited to limit_kib KiB: it must
+// stop with exit 3 on a write that does not fit, leaving no temporary file in `dir`.
+CommandResult fit_with_file_limit(const fs::path& dir, const fs::path& run, int limit_kib) {
+  const CommandResult r =
+      run_with_file_limit("fit " + source("scenarios/fit/bench_hidden.yaml") +
+                              " --max-generations 2 --threads 1 --out " + run.string(),
+                          limit_kib);
+  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find(": cannot write: File too large"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_EQ(temp_files_in(dir), 0);
+  return r;
+}
+
 TEST(DiskFullTest, SimulateExitsThreeAndLeavesNoPartialLog) {
   const fs::path dir = fresh_dir("disk_full_simulate");
   // The log is 23 KB; 8 KiB is not enough.
@@ -55,16 +69,9 @@ TEST(DiskFullTest, FitStoppedBeforeItsFirstCheckpointSaysToStartAgain) {
   const fs::path run = dir / "run";
   // 2 KiB per file: run.json or the first checkpoint (~3 KB) cannot be written, depending on
   // how long the folder's path is.
-  const CommandResult r =
-      run_with_file_limit("fit " + source("scenarios/fit/bench_hidden.yaml") +
-                              " --max-generations 2 --threads 1 --out " + run.string(),
-                          2);
-  EXPECT_EQ(r.exit_code, 3) << r.stderr_text;
+  const CommandResult r = fit_with_file_limit(dir, run, 2);
   EXPECT_NE(r.stderr_text.find(run.string() + "/"), std::string::npos) << r.stderr_text;
-  EXPECT_NE(r.stderr_text.find(": cannot write: File too large"), std::string::npos)
-      << r.stderr_text;
   EXPECT_FALSE(fs::exists(run / "checkpoint.json"));
-  EXPECT_EQ(temp_files_in(dir), 0);
 
   const CommandResult resumed = run_motoflex("resume " + run.string());
   EXPECT_EQ(resumed.exit_code, 2) << resumed.stderr_text;
@@ -76,14 +83,7 @@ TEST(DiskFullTest, FitStoppedAtAnOutputResumesToTheEnd) {
   const fs::path dir = fresh_dir("disk_full_output");
   const fs::path run = dir / "run";
   // 16 KiB holds the checkpoint and best.json but not the best fit's replayed logs.
-  const CommandResult stopped =
-      run_with_file_limit("fit " + source("scenarios/fit/bench_hidden.yaml") +
-                              " --max-generations 2 --threads 1 --out " + run.string(),
-                          16);
-  EXPECT_EQ(stopped.exit_code, 3) << stopped.stderr_text;
-  EXPECT_NE(stopped.stderr_text.find(": cannot write: File too large"), std::string::npos)
-      << stopped.stderr_text;
-  EXPECT_EQ(temp_files_in(dir), 0);
+  fit_with_file_limit(dir, run, 16);
   ASSERT_TRUE(fs::exists(run / "checkpoint.json"));
   const auto checkpoint = nlohmann::json::parse(std::ifstream(run / "checkpoint.json"));
   EXPECT_TRUE(checkpoint.is_object());

@@ -109,20 +109,9 @@ class Motoflex2011ServoLaw final : public ServoLaw {
   double frozen_velocity_rad_s_ = 0.0;  // ω of §2.6 (original's signs)
 };
 
-const char* const kMotorNames[] = {"pid.kp_v_per_rad",  "pid.ki_v_per_rad_s", "pid.kd_v_s_per_rad",
-                                   "motor.supply_v",    "motor.R_ohm",        "motor.L_h",
-                                   "motor.Kt_nm_per_a", "motor.stiffness"};
-const char* const kGearLeaves[] = {"ratio",        "motor_viscous_nm_s_per_rad",
-                                   "backlash_rad", "spring_nm_per_rad",
-                                   "mass_kg_m2",   "viscous_nm_s_per_rad"};
-
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   const ActuatorSpec& spec = model.actuators[actuator];
-  std::vector<std::string> out(std::begin(kMotorNames), std::end(kMotorNames));
-  for (const char* leaf : kGearLeaves) out.push_back("gear." + spec.group + "." + leaf);
-  for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kMotorLoad)) {
-    out.push_back(std::move(name));
-  }
+  std::vector<std::string> out = motoflex_pipeline_parameter_names(spec);
   for (auto& name : motoflex_2011_switch_names()) out.push_back(std::move(name));
   return out;
 }

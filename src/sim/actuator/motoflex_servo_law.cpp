@@ -67,20 +67,9 @@ class MotoflexServoLaw final : public ServoLaw {
   bool operating_point_varies_;
 };
 
-const char* const kMotorNames[] = {"pid.kp_v_per_rad",  "pid.ki_v_per_rad_s", "pid.kd_v_s_per_rad",
-                                   "motor.supply_v",    "motor.R_ohm",        "motor.L_h",
-                                   "motor.Kt_nm_per_a", "motor.stiffness"};
-const char* const kGearLeaves[] = {"ratio",        "motor_viscous_nm_s_per_rad",
-                                   "backlash_rad", "spring_nm_per_rad",
-                                   "mass_kg_m2",   "viscous_nm_s_per_rad"};
-
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   const ActuatorSpec& spec = model.actuators[actuator];
-  std::vector<std::string> out(std::begin(kMotorNames), std::end(kMotorNames));
-  for (const char* leaf : kGearLeaves) out.push_back("gear." + spec.group + "." + leaf);
-  for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kMotorLoad)) {
-    out.push_back(std::move(name));
-  }
+  std::vector<std::string> out = motoflex_pipeline_parameter_names(spec);
   out.push_back(armature_parameter_name(spec.name));
   out.emplace_back("motor.R_drift_per_s");
   out.emplace_back("motor.supply_sag_ohm");

@@ -6,6 +6,7 @@
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/model/joint_units.hpp"
+#include "motoflex/sim/actuator/friction_family.hpp"
 
 namespace motoflex {
 
@@ -53,6 +54,21 @@ double clip_torque_speed_nm(double torque_nm, double velocity_rad_s, double torq
   }
   // min/max rather than std::clamp, which is undefined for a (bad) lower > upper.
   return std::min(std::max(torque_nm, lower_nm), upper_nm);
+}
+
+std::vector<std::string> motoflex_pipeline_parameter_names(const ActuatorSpec& actuator) {
+  static const char* const kMotorNames[] = {
+      "pid.kp_v_per_rad", "pid.ki_v_per_rad_s", "pid.kd_v_s_per_rad", "motor.supply_v",
+      "motor.R_ohm",      "motor.L_h",          "motor.Kt_nm_per_a",  "motor.stiffness"};
+  static const char* const kGearLeaves[] = {"ratio",        "motor_viscous_nm_s_per_rad",
+                                            "backlash_rad", "spring_nm_per_rad",
+                                            "mass_kg_m2",   "viscous_nm_s_per_rad"};
+  std::vector<std::string> out(std::begin(kMotorNames), std::end(kMotorNames));
+  for (const char* leaf : kGearLeaves) out.push_back("gear." + actuator.group + "." + leaf);
+  for (auto& name : friction_parameter_names(actuator.name, FrictionTerms::kMotorLoad)) {
+    out.push_back(std::move(name));
+  }
+  return out;
 }
 
 std::string armature_parameter_name(const std::string& joint) {

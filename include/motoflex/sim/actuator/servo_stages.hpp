@@ -4,6 +4,7 @@
 // src/sim/actuator/*_servo_law.cpp hold the state and read the parameters).
 
 #include <string>
+#include <vector>
 
 #include "motoflex/sim/actuator/servo_law.hpp"
 
@@ -52,6 +53,11 @@ std::string servo_parameter_prefix(const ActuatorSpec& actuator);
 // while braking against the motion keeps τ_max. ω₀ = 0: no curve.
 double clip_torque_speed_nm(double torque_nm, double velocity_rad_s, double torque_max_nm,
                             double no_load_speed_rad_s);
+
+// The parameters of seed 001's PID → motor → gear pipeline for one actuator, shared by the
+// `motoflex` and `motoflex_2011` laws: PID gains, motor, the actuator group's gear, and the
+// joint's motor-load friction terms (friction_family.hpp, FrictionTerms::kMotorLoad).
+std::vector<std::string> motoflex_pipeline_parameter_names(const ActuatorSpec& actuator);
 
 // joint.<J>.armature_kg_m2: the reflected rotor inertia J_rotor·σ² of a joint, which the rollout
 // adds as joint-space inertia (ServoLaw::armature_kg_m2). Throws ModelError when negative.
