@@ -302,10 +302,7 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
 
   XmlElement mujoco("mujoco");
   mujoco.attribute("model", model.name);
-  mujoco.comment("Exported by motoflex " + std::string(version()) + " for MuJoCo 2.2.2+ from " +
-                 (input.provenance.source_path.empty() ? std::string("defaults")
-                                                       : input.provenance.source_path) +
-                 "; servo " + detail::servo_description(input) +
+  mujoco.comment(detail::export_header(input, " for MuJoCo 2.2.2+") +
                  ". Lost in MJCF: backlash, gear spring and mass, PID integral, motor "
                  "inductance, Stribeck/load friction, contact slip, sensor effects (see the JSON "
                  "export).");
