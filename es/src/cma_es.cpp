@@ -97,6 +97,27 @@ std::size_t CmaEs::next_batch_size() const {
   return should_stop() ? 0 : parameters_.lambda;
 }
 
+std::size_t CmaEs::exact_ranks_needed() const {
+  const std::size_t lambda = next_batch_size();
+  if (!options_.racing || options_.active || lambda == 0) return lambda;
+  // tol_fun compares the range of the whole generation (with the recent bests): unless the
+  // recent bests alone already span tol_fun, so that this generation cannot make it fire,
+  // every value must be exact.
+  const std::size_t history = tol_fun_history();
+  if (best_history_.size() + 1 >= history) {
+    const auto recent = best_history_.end() - static_cast<std::ptrdiff_t>(history - 1);
+    const auto [low, high] = std::minmax_element(recent, best_history_.end());
+    if (!(*high - *low >= options_.tol_fun)) return lambda;
+  }
+  // The recombination reads ranks 0..μ−1, the median history rank ⌊λ/2⌋.
+  return std::min(lambda, std::max(parameters_.mu, lambda / 2 + 1));
+}
+
+std::size_t CmaEs::tol_fun_history() const {
+  return 10 + static_cast<std::size_t>(std::ceil(30.0 * static_cast<double>(dimension()) /
+                                                 static_cast<double>(parameters_.lambda)));
+}
+
 std::vector<std::vector<double>> CmaEs::ask() {
   pending_x_.clear();
   if (should_stop()) return {};
@@ -188,7 +209,7 @@ StopReason CmaEs::run_stop_reason(const std::vector<double>& fitness,
   if (run_generation_ >= max_iterations) return StopReason::kMaxIterations;
 
   // tol_fun: recent best values and the whole current generation within tol_fun.
-  const std::size_t history = 10 + static_cast<std::size_t>(std::ceil(30.0 * nd / lambda_d));
+  const std::size_t history = tol_fun_history();
   if (best_history_.size() >= history) {
     const auto recent = best_history_.end() - static_cast<std::ptrdiff_t>(history);
     const auto [low, high] = std::minmax_element(recent, best_history_.end());

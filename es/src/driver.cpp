@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -60,6 +62,52 @@ GenerationReport generation_report(const Strategy& strategy, const std::vector<d
   report.best_fitness = strategy.best_fitness();
   report.improved = strategy.best_fitness() < best_before;
   return report;
+}
+
+// Racing: the first `exact` individuals are evaluated against the strategy's threshold; the rest
+// follow in chunks of the evaluator's width, each against the exact-th best value known so far
+// (just above it, so a tie is evaluated in full). An individual stopped there is worse than
+// `exact` individuals, so it is not among the best `exact` of the batch, and every one of
+// those is exact: the strategy's ranks 0..exact−1 and their values are those of a full
+// evaluation. Chunks keep the batch's indices (EvaluationContext::first_individual), so a
+// problem's random streams are those of a full evaluation too.
+void evaluate_racing(Evaluator& evaluator, Problem& problem,
+                     const std::vector<std::vector<double>>& xs, std::vector<double>& fitness,
+                     const EvaluationContext& context, std::size_t exact) {
+  if (exact == 0 || exact >= xs.size()) {
+    evaluator.evaluate(problem, xs, fitness, context);
+    return;
+  }
+  fitness.clear();
+  std::vector<double> exact_values;  // ranked values of the individuals not stopped, ascending
+  std::vector<double> chunk_fitness;
+  const auto chunk_size = static_cast<std::size_t>(std::max(1, evaluator.workers()));
+  std::size_t begin = 0;
+  while (begin < xs.size()) {
+    const std::size_t end = begin == 0 ? exact : std::min(xs.size(), begin + chunk_size);
+    EvaluationContext chunk = context;
+    chunk.first_individual = context.first_individual + begin;
+    if (begin > 0 && std::isfinite(exact_values[exact - 1])) {
+      chunk.stop_threshold = std::min(
+          context.stop_threshold,
+          std::nextafter(exact_values[exact - 1], std::numeric_limits<double>::infinity()));
+    }
+    evaluator.evaluate(
+        problem,
+        std::vector<std::vector<double>>(xs.begin() + static_cast<std::ptrdiff_t>(begin),
+                                         xs.begin() + static_cast<std::ptrdiff_t>(end)),
+        chunk_fitness, chunk);
+    for (const double f : chunk_fitness) {
+      fitness.push_back(f);
+      // A value at or above the threshold may be a stopped individual's partial sum.
+      if (ranked_fitness(f) < chunk.stop_threshold) {
+        exact_values.insert(
+            std::upper_bound(exact_values.begin(), exact_values.end(), ranked_fitness(f)),
+            ranked_fitness(f));
+      }
+    }
+    begin = end;
+  }
 }
 
 }  // namespace
@@ -142,7 +190,7 @@ RunSummary run_optimisation(Strategy& strategy, Problem& problem, Evaluator& eva
     }
 
     const Clock::time_point evaluation_start = Clock::now();
-    evaluator.evaluate(problem, xs, fitness, context);
+    evaluate_racing(evaluator, problem, xs, fitness, context, strategy.exact_ranks_needed());
     const double evaluation_seconds = seconds_since(evaluation_start);
     summary.evaluation_seconds += evaluation_seconds;
 

@@ -22,7 +22,7 @@ FitBudget read_budget(const YamlValue& budget) {
 StrategyConfig read_strategy(const YamlValue& node) {
   node.require_keys_within({"kind", "mu", "lambda", "kappa", "rho", "object_recombination",
                             "step_recombination", "initial_step", "sigma", "population", "restarts",
-                            "algorithm", "polish", "polish_evaluations"});
+                            "active", "algorithm", "polish", "polish_evaluations"});
   StrategyConfig s;
   s.kind = node.get_string("kind", s.kind);
   if (s.kind != "mu_plus_lambda" && s.kind != "cma_es" && s.kind != "nlopt") {
@@ -51,6 +51,7 @@ StrategyConfig read_strategy(const YamlValue& node) {
   s.sigma = node.get_double("sigma", s.sigma);
   s.population = positive("population", 0);
   s.restarts = positive("restarts", static_cast<int>(s.restarts));
+  s.active = node.get_bool("active", s.active);
   s.algorithm = node.get_string("algorithm", s.algorithm);
   for (const char* key : {"algorithm", "polish"}) {
     if (const auto v = node.find(key)) {

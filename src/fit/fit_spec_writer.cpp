@@ -42,20 +42,23 @@ nlohmann::ordered_json polish_to_json(const PolishSpec& p) {
 }
 
 nlohmann::ordered_json strategy_to_json(const StrategyConfig& s) {
-  return {{"kind", s.kind},
-          {"mu", s.mu},
-          {"lambda", s.lambda},
-          {"kappa", s.kappa},
-          {"rho", s.rho},
-          {"object_recombination", s.object_recombination},
-          {"step_recombination", s.step_recombination},
-          {"initial_step", s.initial_step},
-          {"sigma", s.sigma},
-          {"population", s.population},
-          {"restarts", s.restarts},
-          {"algorithm", s.algorithm},
-          {"polish", s.polish},
-          {"polish_evaluations", s.polish_evaluations}};
+  nlohmann::ordered_json out = {{"kind", s.kind},
+                                {"mu", s.mu},
+                                {"lambda", s.lambda},
+                                {"kappa", s.kappa},
+                                {"rho", s.rho},
+                                {"object_recombination", s.object_recombination},
+                                {"step_recombination", s.step_recombination},
+                                {"initial_step", s.initial_step},
+                                {"sigma", s.sigma},
+                                {"population", s.population},
+                                {"restarts", s.restarts},
+                                {"algorithm", s.algorithm},
+                                {"polish", s.polish},
+                                {"polish_evaluations", s.polish_evaluations}};
+  // Written only when off, so the identity (and config hash) of every earlier run is unchanged.
+  if (!s.active) out["active"] = false;
+  return out;
 }
 
 nlohmann::json overrides_to_json(const FitOverrides& o) {

@@ -24,6 +24,10 @@ struct CmaEsOptions {
   std::size_t population_size = 0;
   // Active covariance update: the worst λ−μ samples get negative weights (Hansen 2016, eq. 53).
   bool active = true;
+  // Racing (only without the active update, which ranks every sample): the driver evaluates
+  // the first max(μ, ⌊λ/2⌋+1) samples, then stops each other one as soon as it is worse than
+  // all of them (the median history reads rank ⌊λ/2⌋). Bit-identical to full evaluation.
+  bool racing = true;
   // IPOP (Auger & Hansen 2005): when a run stops on a local criterion, start again with λ
   // multiplied by population_increase, up to max_restarts times. 0 = plain CMA-ES.
   std::size_t max_restarts = 9;
@@ -93,8 +97,11 @@ CmaParameters cma_parameters(std::size_t n, std::size_t lambda, bool active);
 // r has period 2 the mean is folded back into [-1, 1) after each update, which keeps the
 // numbers small without changing any sample. Working in the normalised box also makes the
 // search invariant to the units of each parameter.
-// selection_threshold() is +inf: with the active update every rank of every sample enters the
-// covariance update, so no individual can be stopped early without changing the run.
+// selection_threshold() is +inf. With the active update every rank of every sample enters the
+// covariance update, so no individual can be stopped early without changing the run; without
+// it (active = false) only the best max(μ, ⌊λ/2⌋+1) ranks matter, which exact_ranks_needed()
+// tells the driver (racing), unless this generation could end the run by tol_fun, which reads
+// the whole generation's range.
 class CmaEs final : public Strategy {
  public:
   // Throws std::invalid_argument for invalid options or a bad start point.
@@ -104,6 +111,7 @@ class CmaEs final : public Strategy {
   std::vector<std::vector<double>> ask() override;
   void tell(const std::vector<double>& fitness) override;
   std::size_t next_batch_size() const override;
+  std::size_t exact_ranks_needed() const override;
   nlohmann::json save_state() const override;
   void load_state(const nlohmann::json& state) override;
 
@@ -119,6 +127,8 @@ class CmaEs final : public Strategy {
   const std::vector<std::string>& run_log() const { return run_log_; }
 
  private:
+  // Generations of best values tol_fun looks back over: 10 + ⌈30n/λ⌉.
+  std::size_t tol_fun_history() const;
   void start_run(const Eigen::VectorXd& mean_normalised);
   Eigen::VectorXd normalise(const std::vector<double>& x) const;
   std::vector<double> phenotype(const Eigen::VectorXd& u) const;

@@ -65,6 +65,11 @@ class Strategy {
   // The fitness an individual of the next batch must be strictly below to have any influence on
   // the run; +inf if every individual can matter. See EvaluationContext::stop_threshold.
   virtual double selection_threshold() const { return std::numeric_limits<double>::infinity(); }
+  // Racing: how many of the next batch's best individuals the strategy must know with their
+  // exact fitness and order; every other individual only has to be known to rank below them.
+  // The driver then evaluates that many first and the rest against their worst value (see
+  // run_optimisation), which changes nothing but the work done. Default: the whole batch.
+  virtual std::size_t exact_ranks_needed() const { return next_batch_size(); }
 
   // Complete state as JSON: population (with step sizes and ages) or distribution, seed and
   // generation (which key every random stream), best so far, evaluation counts, stop state.

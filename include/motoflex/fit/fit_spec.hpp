@@ -60,6 +60,9 @@ struct StrategyConfig {
   double sigma = 0.25;  // relative to the bound widths
   std::size_t population = 0;
   std::size_t restarts = 9;
+  // The active covariance update (worst samples get negative weights). Off: the original rank-μ
+  // update, which lets the driver race the worse half of each generation (bit-identical).
+  bool active = true;
   // nlopt: bobyqa | sbplx | crs2_lm | isres | esch
   std::string algorithm = "bobyqa";
   // optional local polish of the best point after the main strategy (nlopt local algorithm)
