@@ -198,6 +198,92 @@ void add_mesh_assets(XmlElement& mujoco, const Writer& w) {
   }
 }
 
+// The floor plane with the soft-contact solref, when some shape touches the ground.
+void add_floor(XmlElement& world, Writer& w) {
+  const ExportInput& input = w.input;
+  std::size_t foot_boxes = 0;
+  for (const auto& body : input.model.bodies) {
+    for (const auto& shape : body.collisions) {
+      foot_boxes += shape.contact != GroundContact::kFall ? 1 : 0;
+    }
+  }
+  if (foot_boxes == 0) return;
+  const auto [timeconst, dampratio] = contact_solref(input, foot_boxes);
+  w.contact_solref = format_numbers({timeconst, dampratio});
+  world.child("geom")
+      .attribute("name", "floor")
+      .attribute("type", "plane")
+      .attribute("size", "0 0 1")
+      .attribute("contype", "0")
+      .attribute("conaffinity", "1")
+      .attribute("friction", format_numbers({input.parameters.get("contact.mu"), 0.0, 0.0}))
+      .attribute("solref", w.contact_solref)
+      .attribute("solimp", kContactSolimp);
+}
+
+// URDF <mimic>: the follower's position is multiplier·leader + offset.
+void add_mimic_equalities(XmlElement& mujoco, const Writer& w) {
+  const RobotModel& model = w.input.model;
+  bool has_mimic = false;
+  for (const JointSpec& joint : model.joints) has_mimic |= joint.mimic.has_value();
+  if (!has_mimic) return;
+  XmlElement& equality = mujoco.child("equality");
+  for (const JointSpec& joint : model.joints) {
+    if (!joint.mimic) continue;
+    const JointSpec& leader = model.joints[joint.mimic->leader_joint];
+    const int leader_actuator = joint.mimic->leader_axis == 1 ? leader.actuator1 : leader.actuator2;
+    equality.child("joint")
+        .attribute("joint1", joint.name)
+        .attribute("joint2",
+                   w.actuator_or(leader_actuator,
+                                 joint.mimic->leader_axis == 1 ? leader.name : leader.name + "_2"))
+        .attribute("polycoef",
+                   format_numbers({joint.mimic->offset, joint.mimic->multiplier, 0.0, 0.0, 0.0}));
+  }
+}
+
+// One position actuator per servo (a PD with the servo's equivalent gains and torque limit).
+void add_actuators(XmlElement& mujoco, const Writer& w) {
+  XmlElement& actuator = mujoco.child("actuator");
+  bool next_angle = false;
+  for (const ActuatorExport& a : w.actuators) {
+    next_angle = next_angle || a.command_is_next_angle;
+    actuator.child("general")
+        .attribute("name", a.joint)
+        .attribute("joint", a.joint)
+        .attribute("gainprm", a.kp_nm_per_rad)
+        .attribute("biastype", "affine")
+        .attribute("biasprm", format_numbers({0.0, -a.kp_nm_per_rad, -a.kv_nm_s_per_rad}))
+        .attribute("forcelimited", "true")
+        .attribute("forcerange", format_numbers({-a.effort_nm, a.effort_nm}));
+  }
+  if (next_angle) {
+    actuator.comment(
+        "ideal servo: set ctrl to the angle the joint must reach at the END of the "
+        "step (motoflex's ideal servo closes the error in one step)");
+  }
+}
+
+// Every motoflex parameter as a custom numeric, and the fit's provenance as a custom text.
+void add_custom_data(XmlElement& mujoco, const ExportInput& input) {
+  XmlElement& custom = mujoco.child("custom");
+  const ParameterRegistry& registry = input.parameters.registry();
+  for (std::size_t i = 0; i < registry.size(); ++i) {
+    custom.child("numeric")
+        .attribute("name", "motoflex:" + registry.spec(i).name)
+        .attribute("data", input.parameters.get(i));
+  }
+  const FitProvenance& p = input.provenance;
+  std::string provenance = "servo=" + input.servo;
+  if (!p.source_path.empty()) provenance += " source=" + p.source_path;
+  if (p.fitness) provenance += " fitness=" + format_number(*p.fitness);
+  if (!p.config_hash.empty()) provenance += " config_hash=" + p.config_hash;
+  if (!p.date.empty()) provenance += " date=" + p.date;
+  if (!p.motoflex_version.empty()) provenance += " fit_motoflex_version=" + p.motoflex_version;
+  provenance += " exported_by=motoflex_" + std::string(version());
+  custom.child("text").attribute("name", "motoflex:provenance").attribute("data", provenance);
+}
+
 }  // namespace
 
 std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
@@ -236,81 +322,11 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
   }
   add_mesh_assets(mujoco, w);
   XmlElement& world = mujoco.child("worldbody");
-  std::size_t foot_boxes = 0;
-  for (const auto& body : model.bodies) {
-    for (const auto& shape : body.collisions) {
-      foot_boxes += shape.contact != GroundContact::kFall ? 1 : 0;
-    }
-  }
-  if (foot_boxes > 0) {
-    const auto [timeconst, dampratio] = contact_solref(input, foot_boxes);
-    w.contact_solref = format_numbers({timeconst, dampratio});
-    world.child("geom")
-        .attribute("name", "floor")
-        .attribute("type", "plane")
-        .attribute("size", "0 0 1")
-        .attribute("contype", "0")
-        .attribute("conaffinity", "1")
-        .attribute("friction", format_numbers({input.parameters.get("contact.mu"), 0.0, 0.0}))
-        .attribute("solref", w.contact_solref)
-        .attribute("solimp", kContactSolimp);
-  }
+  add_floor(world, w);
   w.add_body(world, model.root_body, Eigen::Vector3d::Zero());
-
-  // URDF <mimic>: the follower's position is multiplier·leader + offset.
-  bool has_mimic = false;
-  for (const JointSpec& joint : model.joints) has_mimic |= joint.mimic.has_value();
-  if (has_mimic) {
-    XmlElement& equality = mujoco.child("equality");
-    for (const JointSpec& joint : model.joints) {
-      if (!joint.mimic) continue;
-      const JointSpec& leader = model.joints[joint.mimic->leader_joint];
-      const int leader_actuator =
-          joint.mimic->leader_axis == 1 ? leader.actuator1 : leader.actuator2;
-      equality.child("joint")
-          .attribute("joint1", joint.name)
-          .attribute("joint2", w.actuator_or(leader_actuator, joint.mimic->leader_axis == 1
-                                                                  ? leader.name
-                                                                  : leader.name + "_2"))
-          .attribute("polycoef",
-                     format_numbers({joint.mimic->offset, joint.mimic->multiplier, 0.0, 0.0, 0.0}));
-    }
-  }
-  XmlElement& actuator = mujoco.child("actuator");
-  bool next_angle = false;
-  for (const ActuatorExport& a : w.actuators) {
-    next_angle = next_angle || a.command_is_next_angle;
-    actuator.child("general")
-        .attribute("name", a.joint)
-        .attribute("joint", a.joint)
-        .attribute("gainprm", a.kp_nm_per_rad)
-        .attribute("biastype", "affine")
-        .attribute("biasprm", format_numbers({0.0, -a.kp_nm_per_rad, -a.kv_nm_s_per_rad}))
-        .attribute("forcelimited", "true")
-        .attribute("forcerange", format_numbers({-a.effort_nm, a.effort_nm}));
-  }
-  if (next_angle) {
-    actuator.comment(
-        "ideal servo: set ctrl to the angle the joint must reach at the END of the "
-        "step (motoflex's ideal servo closes the error in one step)");
-  }
-
-  XmlElement& custom = mujoco.child("custom");
-  const ParameterRegistry& registry = input.parameters.registry();
-  for (std::size_t i = 0; i < registry.size(); ++i) {
-    custom.child("numeric")
-        .attribute("name", "motoflex:" + registry.spec(i).name)
-        .attribute("data", input.parameters.get(i));
-  }
-  const FitProvenance& p = input.provenance;
-  std::string provenance = "servo=" + input.servo;
-  if (!p.source_path.empty()) provenance += " source=" + p.source_path;
-  if (p.fitness) provenance += " fitness=" + format_number(*p.fitness);
-  if (!p.config_hash.empty()) provenance += " config_hash=" + p.config_hash;
-  if (!p.date.empty()) provenance += " date=" + p.date;
-  if (!p.motoflex_version.empty()) provenance += " fit_motoflex_version=" + p.motoflex_version;
-  provenance += " exported_by=motoflex_" + std::string(version());
-  custom.child("text").attribute("name", "motoflex:provenance").attribute("data", provenance);
+  add_mimic_equalities(mujoco, w);
+  add_actuators(mujoco, w);
+  add_custom_data(mujoco, input);
   return mujoco.to_string();
 }
 
