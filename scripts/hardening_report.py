@@ -38,7 +38,7 @@ def fuzz_target(build, target, minutes):
     findings = build / "findings" / target
     return {
         "target": target,
-        "minutes": minutes,
+        "minutes": int(minutes) if minutes == int(minutes) else minutes,
         "executions": stat(text, "number_of_executed_units"),
         "executions_per_s": stat(text, "average_exec_per_sec"),
         "new_units": stat(text, "new_units_added"),
@@ -49,21 +49,34 @@ def fuzz_target(build, target, minutes):
     }
 
 
-def sanitize_section(log_path, wall_s):
-    text = pathlib.Path(log_path).read_text(errors="replace")
-    summary = re.search(r"(\d+)% tests passed, (\d+) tests? failed out of (\d+)", text)
-    real = re.search(r"Total Test time \(real\) =\s*([0-9.]+) sec", text)
-    if not summary:
-        raise SystemExit(f"hardening_report: no ctest summary in {log_path}")
-    failed, total = int(summary.group(2)), int(summary.group(3))
+def sanitize_section(log_paths, wall_s, scope):
+    """Sums the ctest summaries of one or more saved runs (a whole tier, or module by module)."""
+    tests = failed = skipped = 0
+    seconds = 0.0
+    failed_tests = []
+    for log_path in log_paths:
+        text = pathlib.Path(log_path).read_text(errors="replace")
+        summary = re.search(r"(\d+)% tests passed, (\d+) tests? failed out of (\d+)", text)
+        real = re.search(r"Total Test time \(real\) =\s*([0-9.]+) sec", text)
+        if not summary:
+            raise SystemExit(f"hardening_report: no ctest summary in {log_path}")
+        failed += int(summary.group(2))
+        tests += int(summary.group(3))
+        seconds += float(real.group(1)) if real else 0.0
+        failed_part = text.split("The following tests FAILED:", 1)
+        if len(failed_part) == 2:
+            failed_tests += re.findall(r"^\s*\d+ - (\S+) \((?!Skipped)", failed_part[1], re.M)
+        skipped += len(re.findall(r"^\s*\d+ - \S+ \(Skipped\)", text, re.M))
     return {
         "command": "scripts/test --sanitize",
-        "tests": total,
-        "passed": total - failed,
+        "scope": scope,
+        "tests": tests,
+        "passed": tests - failed,
         "failed": failed,
-        "ctest_seconds": float(real.group(1)) if real else None,
+        "skipped": skipped,
+        "ctest_seconds": round(seconds, 1),
         "wall_s_with_build": wall_s,
-        "failed_tests": re.findall(r"^\s*\d+ - (\S+) \(", text, re.M),
+        "failed_tests": failed_tests,
     }
 
 
@@ -88,9 +101,12 @@ def markdown(results, fixes):
     s = results.get("sanitize")
     lines += ["", "## ASan + UBSan fast tier (`scripts/test --sanitize`)", ""]
     if s:
-        lines += [f"{s['passed']} of {s['tests']} tests passed ({s['failed']} failed); ctest "
-                  f"{s['ctest_seconds']} s, {s['wall_s_with_build']} s with the build "
-                  "(2 shared cores)."]
+        lines += [f"Scope: {s.get('scope', 'the whole fast tier')}.", ""]
+        with_build = (f", {s['wall_s_with_build']:.0f} s with the build" if s["wall_s_with_build"]
+                      else "")
+        lines += [f"{s['passed']} of {s['tests']} tests passed ({s['failed']} failed, "
+                  f"{s.get('skipped', 0)} of the passed skipped); ctest {s['ctest_seconds']} s"
+                  f"{with_build} (2 shared cores)."]
         lines += [f"- failed: {t}" for t in s["failed_tests"]]
     else:
         lines += ["not run"]
@@ -101,7 +117,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--build", default=str(ROOT / "build-fuzz"))
     parser.add_argument("--minutes", type=float, required=True, help="minutes per fuzz target")
-    parser.add_argument("--sanitize-log", help="saved output of scripts/test --sanitize")
+    parser.add_argument("--sanitize-log", action="append",
+                        help="saved output of scripts/test --sanitize (repeat for partial runs)")
+    parser.add_argument("--sanitize-scope", default="the whole fast tier (ctest -L fast)")
     parser.add_argument("--sanitize-wall-s", type=float, help="its wall time, build included")
     parser.add_argument("--out", required=True)
     args = parser.parse_args()
@@ -118,7 +136,7 @@ def main():
         "load_average": round(os.getloadavg()[0], 2),
         "cores": os.cpu_count(),
         "fuzz": [f for t in TARGETS if (f := fuzz_target(pathlib.Path(args.build), t, args.minutes))],
-        "sanitize": (sanitize_section(args.sanitize_log, args.sanitize_wall_s) if args.sanitize_log
+        "sanitize": (sanitize_section(args.sanitize_log, args.sanitize_wall_s, args.sanitize_scope) if args.sanitize_log
                      else previous.get("sanitize")),
     }
     (out / "results.json").write_text(json.dumps(results, indent=2) + "\n")
