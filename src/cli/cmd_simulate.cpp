@@ -76,12 +76,6 @@ int run(const SimulateArgs& args) {
                          (result.end_detail.empty() ? "" : ": " + result.end_detail));
   }
 
-  if (result.frames_completed < 2) {
-    std::fprintf(stderr, "motoflex: %s: the rollout %s at %.4f s, before its second frame: %s\n",
-                 args.scenario.c_str(), to_string(result.end), result.end_time_s,
-                 result.end_detail.c_str());
-    return 1;
-  }
   JointLogMeta meta;
   meta.robot = scenario.model->name;
   meta.rate_hz = scenario.log_rate_hz;

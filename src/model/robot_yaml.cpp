@@ -32,12 +32,16 @@ void read_actuated(const YamlValue& root, RobotYaml& out, ErrorCollector& errors
   }
 }
 
+// (The lambdas name the loop's structured bindings in init-captures: clang before 16 cannot
+// capture a structured binding, and scripts/fuzz builds with clang.)
 // `servos:` maps an actuated joint or a gear/servo group to a servo law.
 void read_servos(const YamlValue& root, RobotYaml& out, ErrorCollector& errors) {
   const auto servos = root.find("servos");
   if (!servos) return;
   for (const auto& [key, law] : servos->entries()) {
-    errors.check([&] { out.servos.push_back({key, law.as_string(), law}); });
+    errors.check([&, &key = key, &law = law] {
+      out.servos.push_back({key, law.as_string(), law});
+    });
   }
 }
 
@@ -45,7 +49,7 @@ void read_structure(const YamlValue& root, RobotYaml& out, ErrorCollector& error
   errors.check([&] {
     if (const auto held = root.find("held_joints")) {
       for (const auto& [joint, angle] : held->entries()) {
-        errors.check([&] { out.held[joint] = angle.as_double(); });
+        errors.check([&, &joint = joint, &angle = angle] { out.held[joint] = angle.as_double(); });
       }
     }
   });
@@ -112,7 +116,8 @@ void read_contacts(const YamlValue& root, RobotYaml& out, ErrorCollector& errors
 void read_stand_pose(const YamlValue& root, RobotYaml& out, ErrorCollector& errors) {
   if (const auto pose = root.find("stand_pose")) {
     for (const auto& [joint, angle] : pose->entries()) {
-      errors.check([&] { out.stand_pose[joint] = angle.as_double(); });
+      errors.check(
+          [&, &joint = joint, &angle = angle] { out.stand_pose[joint] = angle.as_double(); });
     }
   }
 }

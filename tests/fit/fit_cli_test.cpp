@@ -146,6 +146,27 @@ TEST(FitCli, FolderKilledBeforeItsFirstCheckpointSaysRerunFit) {
   EXPECT_TRUE(fs::exists(dir / "run" / "checkpoint.json"));
 }
 
+TEST(FitCli, ResumeAfterGenerationsCsvWasDeletedSaysSoAndGoesOn) {
+  const fs::path dir = fresh_dir("fit_no_generations_csv");
+  record_pendulum_log(dir / "data", "sin_sin");
+  const std::string fit = write_pendulum_fit(dir, dir / "data", kSmallEs, "{generations: 2}");
+  ASSERT_EQ(run_motoflex("fit " + fit + " --out " + (dir / "run").string()).exit_code, 0);
+  fs::remove(dir / "run" / "generations.csv");
+  const CommandResult resumed =
+      run_motoflex("resume " + (dir / "run").string() + " --max-generations 3");
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.stderr_text;
+  EXPECT_NE(resumed.stderr_text.find("generations.csv: missing"), std::string::npos)
+      << resumed.stderr_text;
+  // The new file has its header and only the generation run after the checkpoint.
+  std::ifstream csv(dir / "run" / "generations.csv");
+  std::string header, row, extra;
+  ASSERT_TRUE(std::getline(csv, header));
+  EXPECT_EQ(header.rfind("generation,", 0), 0u) << header;
+  ASSERT_TRUE(std::getline(csv, row));
+  EXPECT_EQ(row.substr(0, row.find(',')), "3") << row;
+  EXPECT_FALSE(std::getline(csv, extra)) << extra;
+}
+
 void expect_one_line_error(const CommandResult& result, const std::string& expected) {
   EXPECT_EQ(result.exit_code, 2) << result.stdout_text << result.stderr_text;
   EXPECT_EQ(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n'), 1)
