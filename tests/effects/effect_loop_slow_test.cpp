@@ -127,6 +127,9 @@ TEST(HiddenEffectLoopNao, FindsAddsAndFixesLinkFlexibility) {
       "%.4f deg\n",
       it.val_rms_before_deg, it.val_rms_after_deg, floor_deg, it.val_imu_rms_before_deg,
       it.val_imu_rms_after_deg);
+  // Measured with the base held at the robot's nominal defaults (scripts/report_loop.py,
+  // 2026-11-25): 0.1662 -> 0.0826 deg against a limit of 0.0831 (half the error before), a thin
+  // margin; with the base held at the truth it was 0.2297 -> 0.0351.
   EXPECT_LE(it.val_rms_after_deg, target);
   EXPECT_LT(it.val_imu_rms_after_deg, 0.5 * it.val_imu_rms_before_deg);
 

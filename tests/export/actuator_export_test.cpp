@@ -22,24 +22,24 @@ TEST(ActuatorExport, MotoflexServoLinearisedAtTheNaoDefaults) {
   const auto model = testing::load_robot("nao");
   const auto actuators = export_actuators(defaults(*model, "motoflex"));
   ASSERT_EQ(actuators.size(), 10u);
-  // LHipRoll: gear A (σ = 201.3), MoToFlex Normal.gnm values (scenarios/robots/nao/README.md).
+  // LHipRoll: gear A (σ = 201.3), the nominal defaults (scenarios/robots/nao/README.md).
   const ActuatorExport& roll = actuators[0];
   EXPECT_EQ(roll.joint, "LHipRoll");
   const double g = 201.3 * 0.7 * 0.0195 / 6.44;  // N·m per V at the joint
-  EXPECT_NEAR(roll.kp_nm_per_rad, g * 319.47, 1e-9);
-  EXPECT_NEAR(roll.kv_nm_s_per_rad, g * 0.1636, 1e-12);
+  EXPECT_NEAR(roll.kp_nm_per_rad, g * 300.0, 1e-9);
+  EXPECT_NEAR(roll.kv_nm_s_per_rad, g * 0.2, 1e-12);
   EXPECT_NEAR(roll.effort_nm, g * 21.6, 1e-9);  // 9.2 N·m stall torque (README)
   EXPECT_NEAR(roll.effort_nm, 9.2, 0.05);
-  EXPECT_NEAR(roll.damping_nm_s_per_rad, 2.6558e-4 * 201.3 * 201.3, 1e-9);  // B·σ²
-  EXPECT_NEAR(roll.friction_nm, 1.6617, 1e-12);
+  EXPECT_NEAR(roll.damping_nm_s_per_rad, 1.9e-5 * 201.3 * 201.3, 1e-9);  // B·σ²
+  EXPECT_NEAR(roll.friction_nm, 1.0, 1e-12);
   EXPECT_NEAR(roll.reduction, 201.3, 1e-12);
-  EXPECT_NEAR(roll.armature_kg_m2, 1.0808e-3, 1e-15);
+  EXPECT_NEAR(roll.armature_kg_m2, 1.0e-3, 1e-15);
   EXPECT_NEAR(roll.velocity_rad_s, roll.effort_nm / roll.damping_nm_s_per_rad, 1e-12);
   EXPECT_FALSE(roll.command_is_next_angle);
   // LKneePitch: gear B (σ = 130.85).
   const ActuatorExport& knee = actuators[2];
   EXPECT_EQ(knee.joint, "LKneePitch");
-  EXPECT_NEAR(knee.damping_nm_s_per_rad, 2.9675e-4 * 130.85 * 130.85, 1e-9);
+  EXPECT_NEAR(knee.damping_nm_s_per_rad, 1.9e-5 * 130.85 * 130.85, 1e-9);
   EXPECT_NEAR(knee.effort_nm, 130.85 * 0.7 * 0.0195 / 6.44 * 21.6, 1e-9);
   EXPECT_TRUE(knee.limited);
   EXPECT_LT(knee.lower_rad, knee.upper_rad);

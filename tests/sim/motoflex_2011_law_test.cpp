@@ -132,13 +132,15 @@ TEST(Motoflex2011Law, VoltageDelayAndUpperClamp) {
 }
 
 // §2.6: in torque mode with zero error the only torque is the bias −B·σ·ω_frozen (ODE signs),
-// ω_frozen the velocity target of frame 819; B·σ = motor_viscous·σ² = 10.76 N·m·s/rad (roll).
+// ω_frozen the velocity target of frame 819; B·σ = motor_viscous·σ² = 10.76 N·m·s/rad (roll)
+// at Normal.gnm's B (set here: the robot's default is a nominal 1.9e-5).
 // Physical: no bias, B·σ as the rollout's implicit damper row. The voltage PID is kept out of
 // the velocity phase here so that zero error means zero voltage.
 TEST(Motoflex2011Law, BIsABiasFromTheFrozenVelocity) {
   for (const double b_frozen : {1.0, 0.0}) {
     LawUnderTest hip("LHipRoll", {{"motoflex_2011.voltage_pid_in_velocity_phase", 0.0},
-                                  {"motoflex_2011.b_from_frozen_velocity", b_frozen}});
+                                  {"motoflex_2011.b_from_frozen_velocity", b_frozen},
+                                  {"gear.A.motor_viscous_nm_s_per_rad", 2.6558e-4}});
     const double b_sigma = hip.get("gear.A.motor_viscous_nm_s_per_rad") * 201.3 * 201.3;
     EXPECT_NEAR(b_sigma, 10.76, 0.01);
     hip.run(0.005, kVelocityPhase_s);  // LHipRoll: I = 0, frozen target 10·0.005 (ours)
@@ -153,10 +155,12 @@ TEST(Motoflex2011Law, BIsABiasFromTheFrozenVelocity) {
 }
 
 // §2.7: the friction row keeps FMax = jointFriction and the frozen velocity as its target
-// (Coulomb friction centred on ω_frozen); physical: target 0.
+// (Coulomb friction centred on ω_frozen); physical: target 0. jointFriction at Normal.gnm's
+// value (set here: the robot's default is a nominal 1 N·m).
 TEST(Motoflex2011Law, FrictionIsCentredOnTheFrozenVelocity) {
   for (const double centred : {1.0, 0.0}) {
-    LawUnderTest knee("RKneePitch", {{"motoflex_2011.friction_at_frozen_velocity", centred}});
+    LawUnderTest knee("RKneePitch", {{"motoflex_2011.friction_at_frozen_velocity", centred},
+                                     {"joint.RKneePitch.friction_nm", 0.7915588}});
     knee.run(0.002, kVelocityPhase_s);
     // RKneePitch: column 7, so the frozen target is 10·0.002 + 7·0.002·0.82 (ours).
     const double frozen = 10.0 * 0.002 + 7.0 * 0.002 * kVelocityPhase_s;
