@@ -406,15 +406,16 @@ void Rollout::Impl::add_mimic_couplings() {
 }
 
 void Rollout::Impl::add_inertia_row(std::size_t actuator, double armature) {
-  // The armature J (kg·m², or a mass in kg on a slider) as joint-space inertia (MuJoCo's armature: J·q̈ on the joint's own equation,
-  // no coupling to the other joints). ODE solves a motor row to J·v₁ = v_target − CFM·λ, so a row
-  // that targets the rate at the start of the step, with unbounded force and CFM = h/J, applies
-  // λ = −J·(v₁ − v₀)/h: the rotor's inertial reaction, implicitly, whatever J·h/I. The joint's
-  // equation becomes (I + J)·(v₁ − v₀)/h = τ, exactly as if J were added to the inertia it
-  // moves (tests/sim/armature_test.cpp). The alternative, a rotor body on the parent coupled 1:1
-  // to the child by a transmission joint, costs a body and a constraint per joint and couples
-  // the joint to the parent's rotation with the whole J, where a real rotor (J/N² spinning at
-  // N·q̇) couples with J/N only; MuJoCo's armature, which the MJCF export writes, has neither.
+  // The armature J (kg·m², or a mass in kg on a slider) as joint-space inertia (MuJoCo's armature:
+  // J·q̈ on the joint's own equation, no coupling to the other joints). ODE solves a motor row to
+  // J·v₁ = v_target − CFM·λ, so a row that targets the rate at the start of the step, with
+  // unbounded force and CFM = h/J, applies λ = −J·(v₁ − v₀)/h: the rotor's inertial reaction,
+  // implicitly, whatever J·h/I. The joint's equation becomes (I + J)·(v₁ − v₀)/h = τ, exactly as if
+  // J were added to the inertia it moves (tests/sim/armature_test.cpp). The alternative, a rotor
+  // body on the parent coupled 1:1 to the child by a transmission joint, costs a body and a
+  // constraint per joint and couples the joint to the parent's rotation with the whole J, where a
+  // real rotor (J/N² spinning at N·q̇) couples with J/N only; MuJoCo's armature, which the MJCF
+  // export writes, has neither.
   axis_rows[actuator].inertia = add_axis_motor(actuator);
   dJointID motor = axis_rows[actuator].inertia;
   detail::set_axis_motor_param(motor, dParamVel, 0.0);

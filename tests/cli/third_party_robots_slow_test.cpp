@@ -36,10 +36,9 @@ fs::path run_check(const std::string& robot) {
   const int status = std::system(command.c_str());
   std::ifstream out_file(work / "out.txt");
   const std::string out{std::istreambuf_iterator<char>(out_file), std::istreambuf_iterator<char>()};
-  std::printf("%s", out.substr(out.rfind("parameter ") == std::string::npos
-                                   ? 0
-                                   : out.rfind("parameter "))
-                        .c_str());
+  std::printf("%s",
+              out.substr(out.rfind("parameter ") == std::string::npos ? 0 : out.rfind("parameter "))
+                  .c_str());
   EXPECT_EQ(status, 0) << out;
   return work / robot / "runs" / "fit";
 }

@@ -74,10 +74,13 @@ TEST(InitRobotStandTest, FreshQuadrupedStandsFiveSecondsOnDefaultPdTorque) {
   std::printf(
       "[ stand   ] quad12 pd_torque: standing z %.4f m, lowest %.4f m (sag %.2f mm), final sag "
       "%.2f mm, max tilt %.2e rad\n",
-      standing_z_m, lowest_z_m, 1e3 * (standing_z_m - lowest_z_m),
-      1e3 * (standing_z_m - final_z_m), tilt_rad);
-  EXPECT_LT(standing_z_m - lowest_z_m, 0.004);
-  EXPECT_LT(tilt_rad, 0.01);
+      standing_z_m, lowest_z_m, 1e3 * (standing_z_m - lowest_z_m), 1e3 * (standing_z_m - final_z_m),
+      tilt_rad);
+  // Measured: sag 0.84 mm (settled by 5 s, the soft contacts' sink included), tilt 4.6e-4 rad.
+  // Before the stance rule (kp = effort / 0.1 rad, kd 0.5 explicit, hips' τ_max 5 N·m) the
+  // hind shank touched the ground 0.12 s after the drop: a fall.
+  EXPECT_LT(standing_z_m - lowest_z_m, 0.0025);
+  EXPECT_LT(tilt_rad, 0.002);
 }
 
 }  // namespace

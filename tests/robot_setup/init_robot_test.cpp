@@ -83,10 +83,9 @@ TEST(InitRobotTest, QuadrupedStandsOnItsMeshFeet) {
   RobotInitOptions options;
   options.urdf_path = data("quadruped/urdf/quad.urdf");
   options.out_dir = testing::fresh_dir("init_quad").string();
-  // The law this test was written with (seed 000's stiff velocity servo): the drop below is about
-  // the mesh feet and the contacts. Under init-robot's default pd_torque (kp = effort/0.1 rad,
-  // kd 0.5) the hind calf capsule touches the ground 0.12 s after the drop (issue 18: open).
-  options.servo = "velocity";
+  // init-robot's default law, pd_torque, with the stance gains of a floating base
+  // (stance_gains.hpp; before them the hind calf capsule touched the ground 0.12 s after the
+  // drop).
   const RobotInitResult result = init_robot(options);
   EXPECT_EQ(result.check.end, RolloutEnd::kCompleted) << result.check.end_detail;
   EXPECT_TRUE(assumed(result, "base", "floating"));

@@ -65,8 +65,8 @@ std::optional<StanceGains> stance_gains(const RobotModel& model, std::size_t act
   out.lever_m = lever_m;
   out.hold_torque_nm = share_kg * kGravity_m_s2 * lever_m;
   out.kp_nm_per_rad = three_digits(out.hold_torque_nm / kStanceSag_rad);
-  out.kd_nm_s_per_rad = three_digits(
-      2.0 * kStanceDampingRatio * std::sqrt(out.kp_nm_per_rad * share_kg * lever_m * lever_m));
+  out.kd_nm_s_per_rad = three_digits(2.0 * kStanceDampingRatio *
+                                     std::sqrt(out.kp_nm_per_rad * share_kg * lever_m * lever_m));
   out.torque_max_nm = three_digits(kStanceTorqueMargin * out.hold_torque_nm);
   return out;
 }

@@ -55,8 +55,7 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   const ActuatorSpec& a = setup.model.actuators[setup.actuator];
   return std::make_unique<VelocityServoLaw>(
       VelocityServoParams{setup.get("joint." + a.name + ".gain_per_s"), setup.get(limit_name(a))},
-      read_friction(setup.get, a, FrictionTerms::kSpeedOnly),
-      read_armature(setup.get, a));
+      read_friction(setup.get, a, FrictionTerms::kSpeedOnly), read_armature(setup.get, a));
 }
 
 // Gains from TITAN-VIII (seed 000 Table I); the limit is the URDF's effort when it has one.
