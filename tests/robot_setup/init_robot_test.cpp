@@ -53,6 +53,9 @@ TEST(InitRobotTest, ArmGetsEveryMovableJointAndItsAssumptionsListed) {
   EXPECT_TRUE(model.actuators.back().prismatic);
   EXPECT_TRUE(assumed(result, "base", "fixed"));
   EXPECT_TRUE(assumed(result, "frame links", "world"));
+  // The welded base is named after its first physical link, not the massless `world` root (a
+  // body "world" made MuJoCo reject the MJCF export: MJCF and SDF reserve the name).
+  EXPECT_EQ(model.bodies[model.root_body].name, "base_link");
   EXPECT_TRUE(assumed(result, "frame links", "tool0"));
   EXPECT_TRUE(assumed(result, "finger_right_joint", "mimic"));
   EXPECT_TRUE(assumed(result, "shoulder_pan effort", "placeholder"));  // 1000 N·m
