@@ -21,6 +21,47 @@ std::string format_double(double value) {
   return text;
 }
 
+// Whether the run ends before the next generation (the strategy is done, or the generation or
+// evaluation budget would be exceeded); if so, says why in `summary`.
+bool stops_before_generation(const Strategy& strategy, const Budget& budget, RunSummary& summary) {
+  if (strategy.should_stop()) {
+    summary.reason = RunStopReason::kStrategy;
+    summary.reason_detail = std::string("strategy: ") + to_string(strategy.stop_reason());
+    if (!strategy.stop_detail().empty())
+      summary.reason_detail += " (" + strategy.stop_detail() + ")";
+    return true;
+  }
+  if (budget.max_generations > 0 && strategy.generation() >= budget.max_generations) {
+    summary.reason = RunStopReason::kMaxGenerations;
+    summary.reason_detail = "max_generations = " + std::to_string(budget.max_generations);
+    return true;
+  }
+  if (budget.max_evaluations > 0 &&
+      strategy.evaluations() + strategy.next_batch_size() > budget.max_evaluations) {
+    summary.reason = RunStopReason::kMaxEvaluations;
+    summary.reason_detail = "max_evaluations = " + std::to_string(budget.max_evaluations);
+    return true;
+  }
+  return false;
+}
+
+// The generation's counts and batch statistics after `tell` (`sorted` is scratch space).
+GenerationReport generation_report(const Strategy& strategy, const std::vector<double>& fitness,
+                                   double best_before, std::vector<double>& sorted) {
+  GenerationReport report;
+  report.generation = strategy.generation();
+  report.evaluations = strategy.evaluations();
+  report.batch_size = fitness.size();
+  sorted.clear();
+  for (double f : fitness) sorted.push_back(ranked_fitness(f));
+  std::sort(sorted.begin(), sorted.end());
+  report.batch_best = sorted.front();
+  report.batch_median = sorted[sorted.size() / 2];
+  report.best_fitness = strategy.best_fitness();
+  report.improved = strategy.best_fitness() < best_before;
+  return report;
+}
+
 }  // namespace
 
 const char* to_string(RunStopReason reason) {
@@ -84,24 +125,7 @@ RunSummary run_optimisation(Strategy& strategy, Problem& problem, Evaluator& eva
   std::vector<double> sorted;
 
   while (true) {
-    if (strategy.should_stop()) {
-      summary.reason = RunStopReason::kStrategy;
-      summary.reason_detail = std::string("strategy: ") + to_string(strategy.stop_reason());
-      if (!strategy.stop_detail().empty())
-        summary.reason_detail += " (" + strategy.stop_detail() + ")";
-      break;
-    }
-    if (budget.max_generations > 0 && strategy.generation() >= budget.max_generations) {
-      summary.reason = RunStopReason::kMaxGenerations;
-      summary.reason_detail = "max_generations = " + std::to_string(budget.max_generations);
-      break;
-    }
-    if (budget.max_evaluations > 0 &&
-        strategy.evaluations() + strategy.next_batch_size() > budget.max_evaluations) {
-      summary.reason = RunStopReason::kMaxEvaluations;
-      summary.reason_detail = "max_evaluations = " + std::to_string(budget.max_evaluations);
-      break;
-    }
+    if (stops_before_generation(strategy, budget, summary)) break;
 
     EvaluationContext context;
     context.generation = strategy.generation();
@@ -125,17 +149,7 @@ RunSummary run_optimisation(Strategy& strategy, Problem& problem, Evaluator& eva
     const double best_before = strategy.best_fitness();
     strategy.tell(fitness);
 
-    GenerationReport report;
-    report.generation = strategy.generation();
-    report.evaluations = strategy.evaluations();
-    report.batch_size = xs.size();
-    sorted.clear();
-    for (double f : fitness) sorted.push_back(ranked_fitness(f));
-    std::sort(sorted.begin(), sorted.end());
-    report.batch_best = sorted.front();
-    report.batch_median = sorted[sorted.size() / 2];
-    report.best_fitness = strategy.best_fitness();
-    report.improved = strategy.best_fitness() < best_before;
+    GenerationReport report = generation_report(strategy, fitness, best_before, sorted);
     report.stop_threshold = context.stop_threshold;
     report.evaluation_seconds = evaluation_seconds;
     report.elapsed_seconds = seconds_since(start);

@@ -148,45 +148,34 @@ double rss_of(const std::vector<Column>& columns, const std::vector<double>& bet
   return sum;
 }
 
-EffectScore score_probe(const Probe& probe, const Residual& residual, const ParameterSet& current,
-                        const RobotModel& model, const FitConfig& config,
-                        const FitJacobian& jacobian) {
-  EffectScore score;
-  score.effect = probe.effect->name;
-  const Effect& effect = *probe.effect;
+// The effect's parameter that the probe moves (the one with a probe fraction).
+std::size_t probed_parameter(const Effect& effect) {
   std::size_t probed = effect.parameters.size();
   for (std::size_t p = 0; p < effect.parameters.size(); ++p) {
     if (effect.parameters[p].probe_fraction != 0.0) probed = p;
   }
-  ParameterSet start = transfer(current, probe.fitness->model().parameters);
-  ParameterSet moved = start;
-  std::vector<Direction> dirs(probe.targets.size());
-  for (std::size_t t = 0; t < probe.targets.size(); ++t) {
-    const EffectTarget& target = probe.targets[t];
-    const double value = std::clamp(start.get(target.name), target.lower, target.upper);
-    const double fraction =
-        target.parameter == probed ? effect.parameters[probed].probe_fraction : 0.0;
-    dirs[t] = direction(to_search(target, value), to_search(target, target.lower),
-                        to_search(target, target.upper), fraction);
-    if (fraction != 0.0) moved.set(target.name, to_model(target, dirs[t].current + dirs[t].step));
-  }
-  const std::vector<std::vector<double>> effect_field = response(*probe.fitness, moved, residual);
+  return probed;
+}
 
-  // The fit's own directions first, then one coefficient per target of an `each` parameter (on
-  // its joints' channels) or one for the tied targets of a global parameter (their joints'
-  // channels and the IMU's).
-  // The probe moved all targets of an `each` parameter at once, so its response on the IMU
-  // channels (which no single joint owns) is shared out equally among their coefficients:
-  // equal coefficients then reproduce the probe exactly.
+// The regression's columns: the fit's own directions first, then one coefficient per target
+// of an `each` parameter (on its joints' channels) or one for the tied targets of a global
+// parameter (their joints' channels and the IMU's). The probe moved all targets of an `each`
+// parameter at once, so its response on the IMU channels (which no single joint owns) is
+// shared out equally among their coefficients: equal coefficients then reproduce the probe
+// exactly. `coefficient_targets[c]` lists the targets of effect coefficient c.
+std::vector<Column> regression_columns(const Probe& probe, std::size_t probed,
+                                       const std::vector<std::vector<double>>& effect_field,
+                                       const Residual& residual, const RobotModel& model,
+                                       const FitJacobian& jacobian,
+                                       std::vector<std::vector<std::size_t>>& coefficient_targets) {
+  const Effect& effect = *probe.effect;
   const std::size_t channels = residual.channels;
   const std::size_t n_joints = model.actuators.size();
   std::vector<Column> columns;
   for (const auto& field : jacobian.columns) columns.push_back(on_every_channel(&field, channels));
-  const std::size_t base_columns = columns.size();
   const bool each = effect.parameters[probed].each;
   std::size_t each_count = 0;
   for (const auto& target : probe.targets) each_count += target.parameter == probed ? 1 : 0;
-  std::vector<std::vector<std::size_t>> coefficient_targets;
   for (std::size_t t = 0; t < probe.targets.size(); ++t) {
     if (probe.targets[t].parameter != probed) continue;
     if (each) {
@@ -211,6 +200,58 @@ EffectScore score_probe(const Probe& probe, const Residual& residual, const Para
       }
     }
   }
+  return columns;
+}
+
+// The warm start (the Gauss-Newton step of the fit's parameters, clipped) and the effect's
+// estimated values from the coefficients `beta`.
+void warm_start_and_estimate(const Probe& probe, const std::vector<Direction>& dirs,
+                             const std::vector<std::vector<std::size_t>>& coefficient_targets,
+                             const Eigen::VectorXd& beta, std::size_t base_columns,
+                             const FitConfig& config, const FitJacobian& jacobian,
+                             EffectScore& score) {
+  const ParameterSpace& space = *config.space;
+  for (std::size_t i = 0; i < base_columns; ++i) {
+    const Direction& d = jacobian.directions[i];
+    const double coordinate = std::clamp(d.current + beta(i) * d.step, d.lower, d.upper);
+    score.fit_start.emplace_back(space.free_parameters()[i].name, space.to_model(i, coordinate));
+  }
+  for (std::size_t t = 0; t < probe.targets.size(); ++t) {
+    double coordinate = dirs[t].current;
+    for (std::size_t c = 0; c < coefficient_targets.size(); ++c) {
+      for (const std::size_t u : coefficient_targets[c]) {
+        if (u == t) coordinate += beta(base_columns + c) * dirs[t].step;
+      }
+    }
+    score.estimate.emplace_back(probe.targets[t].name, to_model(probe.targets[t], coordinate));
+  }
+}
+
+EffectScore score_probe(const Probe& probe, const Residual& residual, const ParameterSet& current,
+                        const RobotModel& model, const FitConfig& config,
+                        const FitJacobian& jacobian) {
+  EffectScore score;
+  score.effect = probe.effect->name;
+  const Effect& effect = *probe.effect;
+  const std::size_t probed = probed_parameter(effect);
+  ParameterSet start = transfer(current, probe.fitness->model().parameters);
+  ParameterSet moved = start;
+  std::vector<Direction> dirs(probe.targets.size());
+  for (std::size_t t = 0; t < probe.targets.size(); ++t) {
+    const EffectTarget& target = probe.targets[t];
+    const double value = std::clamp(start.get(target.name), target.lower, target.upper);
+    const double fraction =
+        target.parameter == probed ? effect.parameters[probed].probe_fraction : 0.0;
+    dirs[t] = direction(to_search(target, value), to_search(target, target.lower),
+                        to_search(target, target.upper), fraction);
+    if (fraction != 0.0) moved.set(target.name, to_model(target, dirs[t].current + dirs[t].step));
+  }
+  const std::vector<std::vector<double>> effect_field = response(*probe.fitness, moved, residual);
+
+  std::vector<std::vector<std::size_t>> coefficient_targets;
+  const std::vector<Column> columns = regression_columns(probe, probed, effect_field, residual,
+                                                         model, jacobian, coefficient_targets);
+  const std::size_t base_columns = jacobian.columns.size();
   double rss_base = residual.rss, rss_full = residual.rss;
   const std::vector<Column> base_only(columns.begin(),
                                       columns.begin() + static_cast<long>(base_columns));
@@ -234,22 +275,8 @@ EffectScore score_probe(const Probe& probe, const Residual& residual, const Para
   score.explained = residual.rss > 0.0 ? (rss_base - rss1) / residual.rss : 0.0;
   score.delta_bic = n * std::log(rss1 / std::max(rss_base, 1e-300)) +
                     static_cast<double>(score.coefficients) * std::log(n);
-  // Warm start: the Gauss-Newton step of the fit's parameters and the effect's, clipped.
-  const ParameterSpace& space = *config.space;
-  for (std::size_t i = 0; i < base_columns; ++i) {
-    const Direction& d = jacobian.directions[i];
-    const double coordinate = std::clamp(d.current + beta(i) * d.step, d.lower, d.upper);
-    score.fit_start.emplace_back(space.free_parameters()[i].name, space.to_model(i, coordinate));
-  }
-  for (std::size_t t = 0; t < probe.targets.size(); ++t) {
-    double coordinate = dirs[t].current;
-    for (std::size_t c = 0; c < coefficient_targets.size(); ++c) {
-      for (const std::size_t u : coefficient_targets[c]) {
-        if (u == t) coordinate += beta(base_columns + c) * dirs[t].step;
-      }
-    }
-    score.estimate.emplace_back(probe.targets[t].name, to_model(probe.targets[t], coordinate));
-  }
+  warm_start_and_estimate(probe, dirs, coefficient_targets, beta, base_columns, config, jacobian,
+                          score);
   return score;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/export/servo_export.hpp"
 #include "motoflex/model/body_kinematics.hpp"
@@ -48,6 +49,13 @@ Eigen::Vector3d placement_offset_m(const RobotModel& model,
   const double lowest = lowest_foot_point_z(model, body_poses(model, actuator_angles_rad));
   if (!std::isfinite(lowest)) return Eigen::Vector3d::Zero();
   return {0.0, 0.0, clearance_m - lowest};
+}
+
+std::string export_header(const ExportInput& input, const std::string& target) {
+  const std::string& source = input.provenance.source_path;
+  return "Exported by motoflex " + std::string(version()) + target + " from " +
+         (source.empty() ? std::string("defaults") : source) + "; servo " +
+         servo_description(input);
 }
 
 std::string servo_description(const ExportInput& input) {

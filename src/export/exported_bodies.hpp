@@ -38,4 +38,8 @@ Eigen::Vector3d placement_offset_m(const RobotModel& model,
 // "a: b" for the XML comments that say what an export drops.
 std::string servo_description(const ExportInput& input);
 
+// The first words of an export's header comment: "Exported by motoflex <version><target> from
+// <fit or 'defaults'>; servo <description>" (`target` e.g. " for MuJoCo 2.2.2+", or empty).
+std::string export_header(const ExportInput& input, const std::string& target);
+
 }  // namespace motoflex::detail

@@ -198,84 +198,52 @@ void add_mesh_assets(XmlElement& mujoco, const Writer& w) {
   }
 }
 
-}  // namespace
-
-std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
-  const RobotModel& model = input.model;
-  Writer w{input, options, export_actuators(input), export_flex(input), {}, {}, {}, {}, {}};
-  std::vector<double> pose = options.placement_pose_rad;
-  if (pose.empty()) pose.assign(model.actuators.size(), 0.0);
-  w.offset_m = detail::placement_offset_m(
-      model, pose, options.clearance_m >= 0.0 ? options.clearance_m : model.initial_clearance_m);
-  w.bodies = detail::exported_bodies(input, w.offset_m, false);
-  w.children.resize(model.bodies.size());
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const int joint = model.bodies[b].parent_joint;
-    if (joint >= 0) w.children[model.joints[joint].parent_body].push_back(static_cast<int>(b));
-  }
-
-  XmlElement mujoco("mujoco");
-  mujoco.attribute("model", model.name);
-  mujoco.comment("Exported by motoflex " + std::string(version()) + " for MuJoCo 2.2.2+ from " +
-                 (input.provenance.source_path.empty() ? std::string("defaults")
-                                                       : input.provenance.source_path) +
-                 "; servo " + detail::servo_description(input) +
-                 ". Lost in MJCF: backlash, gear spring and mass, PID integral, motor "
-                 "inductance, Stribeck/load friction, contact slip, sensor effects (see the JSON "
-                 "export).");
-  mujoco.comment(provenance_comment(input.provenance, input.servo));
-  mujoco.child("compiler").attribute("angle", "radian").attribute("inertiafromgeom", "false");
-  mujoco.child("option")
-      .attribute("timestep", input.dt_s)
-      .attribute("gravity", "0 0 -9.81")
-      .attribute("integrator", "implicit")
-      .attribute("cone", "pyramidal");
-
-  for (const ExportedBody& body : w.bodies) {
-    w.visuals.push_back(detail::exported_visuals(model, body, w.offset_m));
-  }
-  add_mesh_assets(mujoco, w);
-  XmlElement& world = mujoco.child("worldbody");
+// The floor plane with the soft-contact solref, when some shape touches the ground.
+void add_floor(XmlElement& world, Writer& w) {
+  const ExportInput& input = w.input;
   std::size_t foot_boxes = 0;
-  for (const auto& body : model.bodies) {
+  for (const auto& body : input.model.bodies) {
     for (const auto& shape : body.collisions) {
       foot_boxes += shape.contact != GroundContact::kFall ? 1 : 0;
     }
   }
-  if (foot_boxes > 0) {
-    const auto [timeconst, dampratio] = contact_solref(input, foot_boxes);
-    w.contact_solref = format_numbers({timeconst, dampratio});
-    world.child("geom")
-        .attribute("name", "floor")
-        .attribute("type", "plane")
-        .attribute("size", "0 0 1")
-        .attribute("contype", "0")
-        .attribute("conaffinity", "1")
-        .attribute("friction", format_numbers({input.parameters.get("contact.mu"), 0.0, 0.0}))
-        .attribute("solref", w.contact_solref)
-        .attribute("solimp", kContactSolimp);
-  }
-  w.add_body(world, model.root_body, Eigen::Vector3d::Zero());
+  if (foot_boxes == 0) return;
+  const auto [timeconst, dampratio] = contact_solref(input, foot_boxes);
+  w.contact_solref = format_numbers({timeconst, dampratio});
+  world.child("geom")
+      .attribute("name", "floor")
+      .attribute("type", "plane")
+      .attribute("size", "0 0 1")
+      .attribute("contype", "0")
+      .attribute("conaffinity", "1")
+      .attribute("friction", format_numbers({input.parameters.get("contact.mu"), 0.0, 0.0}))
+      .attribute("solref", w.contact_solref)
+      .attribute("solimp", kContactSolimp);
+}
 
-  // URDF <mimic>: the follower's position is multiplier·leader + offset.
+// URDF <mimic>: the follower's position is multiplier·leader + offset.
+void add_mimic_equalities(XmlElement& mujoco, const Writer& w) {
+  const RobotModel& model = w.input.model;
   bool has_mimic = false;
   for (const JointSpec& joint : model.joints) has_mimic |= joint.mimic.has_value();
-  if (has_mimic) {
-    XmlElement& equality = mujoco.child("equality");
-    for (const JointSpec& joint : model.joints) {
-      if (!joint.mimic) continue;
-      const JointSpec& leader = model.joints[joint.mimic->leader_joint];
-      const int leader_actuator =
-          joint.mimic->leader_axis == 1 ? leader.actuator1 : leader.actuator2;
-      equality.child("joint")
-          .attribute("joint1", joint.name)
-          .attribute("joint2", w.actuator_or(leader_actuator, joint.mimic->leader_axis == 1
-                                                                  ? leader.name
-                                                                  : leader.name + "_2"))
-          .attribute("polycoef",
-                     format_numbers({joint.mimic->offset, joint.mimic->multiplier, 0.0, 0.0, 0.0}));
-    }
+  if (!has_mimic) return;
+  XmlElement& equality = mujoco.child("equality");
+  for (const JointSpec& joint : model.joints) {
+    if (!joint.mimic) continue;
+    const JointSpec& leader = model.joints[joint.mimic->leader_joint];
+    const int leader_actuator = joint.mimic->leader_axis == 1 ? leader.actuator1 : leader.actuator2;
+    equality.child("joint")
+        .attribute("joint1", joint.name)
+        .attribute("joint2",
+                   w.actuator_or(leader_actuator,
+                                 joint.mimic->leader_axis == 1 ? leader.name : leader.name + "_2"))
+        .attribute("polycoef",
+                   format_numbers({joint.mimic->offset, joint.mimic->multiplier, 0.0, 0.0, 0.0}));
   }
+}
+
+// One position actuator per servo (a PD with the servo's equivalent gains and torque limit).
+void add_actuators(XmlElement& mujoco, const Writer& w) {
   XmlElement& actuator = mujoco.child("actuator");
   bool next_angle = false;
   for (const ActuatorExport& a : w.actuators) {
@@ -294,7 +262,10 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
         "ideal servo: set ctrl to the angle the joint must reach at the END of the "
         "step (motoflex's ideal servo closes the error in one step)");
   }
+}
 
+// Every motoflex parameter as a custom numeric, and the fit's provenance as a custom text.
+void add_custom_data(XmlElement& mujoco, const ExportInput& input) {
   XmlElement& custom = mujoco.child("custom");
   const ParameterRegistry& registry = input.parameters.registry();
   for (std::size_t i = 0; i < registry.size(); ++i) {
@@ -311,6 +282,48 @@ std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
   if (!p.motoflex_version.empty()) provenance += " fit_motoflex_version=" + p.motoflex_version;
   provenance += " exported_by=motoflex_" + std::string(version());
   custom.child("text").attribute("name", "motoflex:provenance").attribute("data", provenance);
+}
+
+}  // namespace
+
+std::string export_mjcf(const ExportInput& input, const MjcfOptions& options) {
+  const RobotModel& model = input.model;
+  Writer w{input, options, export_actuators(input), export_flex(input), {}, {}, {}, {}, {}};
+  std::vector<double> pose = options.placement_pose_rad;
+  if (pose.empty()) pose.assign(model.actuators.size(), 0.0);
+  w.offset_m = detail::placement_offset_m(
+      model, pose, options.clearance_m >= 0.0 ? options.clearance_m : model.initial_clearance_m);
+  w.bodies = detail::exported_bodies(input, w.offset_m, false);
+  w.children.resize(model.bodies.size());
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const int joint = model.bodies[b].parent_joint;
+    if (joint >= 0) w.children[model.joints[joint].parent_body].push_back(static_cast<int>(b));
+  }
+
+  XmlElement mujoco("mujoco");
+  mujoco.attribute("model", model.name);
+  mujoco.comment(detail::export_header(input, " for MuJoCo 2.2.2+") +
+                 ". Lost in MJCF: backlash, gear spring and mass, PID integral, motor "
+                 "inductance, Stribeck/load friction, contact slip, sensor effects (see the JSON "
+                 "export).");
+  mujoco.comment(provenance_comment(input.provenance, input.servo));
+  mujoco.child("compiler").attribute("angle", "radian").attribute("inertiafromgeom", "false");
+  mujoco.child("option")
+      .attribute("timestep", input.dt_s)
+      .attribute("gravity", "0 0 -9.81")
+      .attribute("integrator", "implicit")
+      .attribute("cone", "pyramidal");
+
+  for (const ExportedBody& body : w.bodies) {
+    w.visuals.push_back(detail::exported_visuals(model, body, w.offset_m));
+  }
+  add_mesh_assets(mujoco, w);
+  XmlElement& world = mujoco.child("worldbody");
+  add_floor(world, w);
+  w.add_body(world, model.root_body, Eigen::Vector3d::Zero());
+  add_mimic_equalities(mujoco, w);
+  add_actuators(mujoco, w);
+  add_custom_data(mujoco, input);
   return mujoco.to_string();
 }
 

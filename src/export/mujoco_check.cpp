@@ -46,22 +46,18 @@ CommandSamples sample_commands(const CommandTrajectory& commands, double dt_s, d
   return out;
 }
 
-}  // namespace
+// One engine's replay of the sampled commands: angles per step (row-major, step × joint).
+struct Replay {
+  std::vector<double> angles_rad;
+  std::size_t steps = 0;  // steps completed
+  double seconds = 0.0;   // wall time of the replay (not of the settling)
+  std::string end;        // how the motoflex rollout ended
+  std::size_t geoms = 0, visual_geoms = 0;
+};
 
-MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTrajectory& commands,
-                                     const MujocoCheckOptions& options) {
-  const RobotModel& model = input.model;
-  const std::size_t n = model.actuators.size();
-  if (commands.joints() != n) {
-    throw InputError("", 0, "commands",
-                     "the trajectory has " + std::to_string(commands.joints()) + " joints, robot " +
-                         model.name + " has " + std::to_string(n));
-  }
-  const CommandSamples samples = sample_commands(commands, input.dt_s, options.settle_s);
-  std::vector<double> first(n);
-  for (std::size_t j = 0; j < n; ++j) first[j] = commands.angle_rad(0, j);
-
-  // --- motoflex (ODE) ---------------------------------------------------------------------------
+Replay replay_in_motoflex(const ExportInput& input, const CommandSamples& samples,
+                          const std::vector<double>& first, const MujocoCheckOptions& options) {
+  const std::size_t n = input.model.actuators.size();
   RolloutOptions rollout_options;
   rollout_options.dt_s = input.dt_s;
   rollout_options.solver = StepSolver::kStep;
@@ -69,19 +65,25 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
   rollout_options.gear_substeps = options.gear_substeps;
   rollout_options.hold_torso = options.hold_torso;
   rollout_options.stop_on_fall = false;
-  Rollout rollout(model, input.parameters, rollout_options, first);
+  Rollout rollout(input.model, input.parameters, rollout_options, first);
   for (std::size_t k = 0; k < samples.settle_steps; ++k) rollout.step(first.data(), first.data());
-  std::vector<double> ode_angles(samples.steps * n);
-  std::size_t ode_steps = 0;
-  auto start = Clock::now();
+  Replay out;
+  out.angles_rad.resize(samples.steps * n);
+  const auto start = Clock::now();
   for (std::size_t k = 0; k < samples.steps; ++k) {
     if (!rollout.step(&samples.now[k * n], &samples.next[k * n])) break;
-    for (std::size_t j = 0; j < n; ++j) ode_angles[k * n + j] = rollout.joint_angle_rad(j);
-    ++ode_steps;
+    for (std::size_t j = 0; j < n; ++j) out.angles_rad[k * n + j] = rollout.joint_angle_rad(j);
+    ++out.steps;
   }
-  const double ode_seconds = seconds_since(start);
+  out.seconds = seconds_since(start);
+  out.end = to_string(rollout.end());
+  return out;
+}
 
-  // --- MuJoCo ----------------------------------------------------------------------------------
+Replay replay_in_mujoco(const ExportInput& input, const CommandSamples& samples,
+                        const std::vector<double>& first, const MujocoCheckOptions& options) {
+  const RobotModel& model = input.model;
+  const std::size_t n = model.actuators.size();
   MjcfOptions mjcf;
   mjcf.weld_root = options.hold_torso;
   mjcf.placement_pose_rad = first;
@@ -111,42 +113,64 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
     for (std::size_t j = 0; j < n; ++j) d->ctrl[actuator[j]] = first[j];
     mj_step(m.get(), d.get());
   }
-  std::vector<double> mujoco_angles(samples.steps * n);
-  start = Clock::now();
+  Replay out;
+  out.angles_rad.resize(samples.steps * n);
+  const auto start = Clock::now();
   for (std::size_t k = 0; k < samples.steps; ++k) {
     for (std::size_t j = 0; j < n; ++j) {
       d->ctrl[actuator[j]] = next_angle[j] ? samples.next[k * n + j] : samples.now[k * n + j];
     }
     mj_step(m.get(), d.get());
-    for (std::size_t j = 0; j < n; ++j) mujoco_angles[k * n + j] = d->qpos[qpos[j]];
+    for (std::size_t j = 0; j < n; ++j) out.angles_rad[k * n + j] = d->qpos[qpos[j]];
   }
-  const double mujoco_seconds = seconds_since(start);
-
-  // --- comparison ------------------------------------------------------------------------------
-  MujocoComparison out;
-  out.joints = model.actuator_names();
-  out.steps = ode_steps;
-  out.motoflex_end = to_string(rollout.end());
-  out.mujoco_version = mj_versionString();
+  out.seconds = seconds_since(start);
+  out.steps = samples.steps;
   out.geoms = static_cast<std::size_t>(m->ngeom);
   for (int g = 0; g < m->ngeom; ++g) out.visual_geoms += m->geom_group[g] == 1 ? 1 : 0;
+  return out;
+}
+
+}  // namespace
+
+MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTrajectory& commands,
+                                     const MujocoCheckOptions& options) {
+  const RobotModel& model = input.model;
+  const std::size_t n = model.actuators.size();
+  if (commands.joints() != n) {
+    throw InputError("", 0, "commands",
+                     "the trajectory has " + std::to_string(commands.joints()) + " joints, robot " +
+                         model.name + " has " + std::to_string(n));
+  }
+  const CommandSamples samples = sample_commands(commands, input.dt_s, options.settle_s);
+  std::vector<double> first(n);
+  for (std::size_t j = 0; j < n; ++j) first[j] = commands.angle_rad(0, j);
+  const Replay ode = replay_in_motoflex(input, samples, first, options);
+  const Replay mujoco = replay_in_mujoco(input, samples, first, options);
+
+  MujocoComparison out;
+  out.joints = model.actuator_names();
+  out.steps = ode.steps;
+  out.motoflex_end = ode.end;
+  out.mujoco_version = mj_versionString();
+  out.geoms = mujoco.geoms;
+  out.visual_geoms = mujoco.visual_geoms;
   out.rms_deg_per_joint.assign(n, 0.0);
   constexpr double kDeg = 180.0 / M_PI;
   double total = 0.0;
-  for (std::size_t k = 0; k < ode_steps; ++k) {
+  for (std::size_t k = 0; k < ode.steps; ++k) {
     for (std::size_t j = 0; j < n; ++j) {
-      const double e = (mujoco_angles[k * n + j] - ode_angles[k * n + j]) * kDeg;
+      const double e = (mujoco.angles_rad[k * n + j] - ode.angles_rad[k * n + j]) * kDeg;
       out.rms_deg_per_joint[j] += e * e;
       out.max_abs_deg = std::max(out.max_abs_deg, std::abs(e));
       total += e * e;
     }
   }
-  if (ode_steps > 0) {
-    for (double& r : out.rms_deg_per_joint) r = std::sqrt(r / ode_steps);
-    out.rms_deg = std::sqrt(total / (ode_steps * n));
+  if (ode.steps > 0) {
+    for (double& r : out.rms_deg_per_joint) r = std::sqrt(r / ode.steps);
+    out.rms_deg = std::sqrt(total / (ode.steps * n));
   }
-  out.motoflex_steps_per_s = ode_seconds > 0.0 ? ode_steps / ode_seconds : 0.0;
-  out.mujoco_steps_per_s = mujoco_seconds > 0.0 ? samples.steps / mujoco_seconds : 0.0;
+  out.motoflex_steps_per_s = ode.seconds > 0.0 ? ode.steps / ode.seconds : 0.0;
+  out.mujoco_steps_per_s = mujoco.seconds > 0.0 ? mujoco.steps / mujoco.seconds : 0.0;
   return out;
 }
 

@@ -5,7 +5,6 @@
 #include "exported_bodies.hpp"
 #include "exported_shapes.hpp"
 #include "exported_visuals.hpp"
-#include "motoflex/core/build_info.hpp"
 #include "motoflex/export/actuator_export.hpp"
 #include "motoflex/export/exported_file.hpp"
 #include "motoflex/export/servo_export.hpp"
@@ -220,10 +219,7 @@ std::string export_sdf(const ExportInput& input) {
 
   XmlElement sdf("sdf");
   sdf.attribute("version", "1.9").attribute("xmlns:motoflex", kMotoflexXmlNamespace);
-  sdf.comment("Exported by motoflex " + std::string(version()) + " from " +
-              (input.provenance.source_path.empty() ? std::string("defaults")
-                                                    : input.provenance.source_path) +
-              "; servo " + detail::servo_description(input) +
+  sdf.comment(detail::export_header(input, "") +
               ". Joint dynamics and limits are the fitted joint-level values; <motoflex:servo> "
               "(ignored by simulators) holds the linearised servo gains and the armature, which "
               "SDF cannot express.");

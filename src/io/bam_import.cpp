@@ -152,35 +152,11 @@ const json* find_key(const json& object, const char* key) {
   return found == object.end() ? nullptr : &*found;
 }
 
-// `shown` names the file in errors; `origin_path` goes into the sidecar's origin.
-BamImport import_document(const json& doc, const std::string& shown,
-                          const std::string& origin_path) {
-  if (const auto problem = classify(doc)) {
-    throw InputError(
-        shown, 0, problem->field,
-        problem->missing_key ? "missing key (" + problem->looks_like + ")" : problem->looks_like);
-  }
-  const Fields fields(shown);
-
-  const json& entries = fields.required(doc, "entries", "entries");
-  if (!entries.is_array()) {
-    fields.fail("entries", std::string("expected a list, found ") + entries.type_name());
-  }
-  const double mass_kg = fields.positive(fields.required(doc, "mass", "mass"), "mass");
-  const double length_m = fields.positive(fields.required(doc, "length", "length"), "length");
-  if (entries.size() < 2) {
-    fields.fail("entries", "need at least 2 entries, found " + std::to_string(entries.size()));
-  }
-
-  BamImport result;
-  std::vector<std::string> notes;
-  JointLog& log = result.log;
-  JointLogMeta& meta = log.meta;
-  meta.robot = kRobot;
-  meta.origin = "imported from BAM " + origin_path;
-  meta.parameters["bench.mass_kg"] = mass_kg;
-  meta.parameters["bench.length_m"] = length_m;
-
+// The document's optional scalar keys (motor, trajectory, kp, vin, arm_mass) into the sidecar;
+// returns the processed log's dt when the file has one.
+std::optional<double> read_header(const json& doc, const Fields& fields, BamImport& result,
+                                  std::vector<std::string>& notes) {
+  JointLogMeta& meta = result.log.meta;
   if (const auto motor = find_key(doc, "motor")) result.motor = fields.text(*motor, "motor");
   if (const auto trajectory = find_key(doc, "trajectory")) {
     meta.motion = fields.text(*trajectory, "trajectory");
@@ -208,7 +184,13 @@ BamImport import_document(const json& doc, const std::string& shown,
   }
   std::optional<double> dt_s;
   if (const auto dt = find_key(doc, "dt")) dt_s = fields.positive(*dt, "dt");
+  return dt_s;
+}
 
+// The entries into the log's rows (strictly increasing time, on the dt grid when there is one);
+// returns the entry at which the torque was released, if it was.
+std::optional<std::size_t> read_entries(const json& entries, const Fields& fields,
+                                        std::optional<double> dt_s, JointLog& log) {
   const std::size_t count = entries.size();
   log.joint_names = {kJoint};
   log.time_s.reserve(count);
@@ -256,39 +238,41 @@ BamImport import_document(const json& doc, const std::string& shown,
       }
     }
   }
+  return torque_off_entry;
+}
 
+// The sidecar's rate and a first note on how the file was sampled.
+void describe_sampling(std::optional<double> dt_s, JointLog& log, std::vector<std::string>& notes) {
+  JointLogMeta& meta = log.meta;
+  const std::size_t count = log.time_s.size();
   const double span_s = log.time_s.back() - log.time_s.front();
   if (dt_s) {
     meta.rate_hz = 1.0 / *dt_s;
     notes.insert(notes.begin(), "BAM processed log (resampled every " + number_text(*dt_s) +
                                     " s by bam/process.py)");
-  } else {
-    meta.rate_hz = static_cast<double>(count - 1) / span_s;
-    double min_period_s = span_s;
-    double max_period_s = 0.0;
-    for (std::size_t i = 1; i < count; ++i) {
-      min_period_s = std::min(min_period_s, log.time_s[i] - log.time_s[i - 1]);
-      max_period_s = std::max(max_period_s, log.time_s[i] - log.time_s[i - 1]);
-    }
-    notes.insert(notes.begin(), "BAM raw log: irregular timestamps kept as recorded (period mean " +
-                                    fixed_text(1e3 / meta.rate_hz, 2) + " ms, min " +
-                                    fixed_text(1e3 * min_period_s, 2) + " ms, max " +
-                                    fixed_text(1e3 * max_period_s, 2) +
-                                    " ms); rate_hz is the mean rate");
+    return;
   }
-  if (torque_off_entry) {
-    result.torque_off_s = log.time_s[*torque_off_entry];
-    meta.parameters["bench.torque_off_s"] = *result.torque_off_s;
-    notes.push_back("torque released at t = " + number_text(*result.torque_off_s) + " s (entry " +
-                    std::to_string(*torque_off_entry) +
-                    "); the later goal_position values were logged but not followed");
+  meta.rate_hz = static_cast<double>(count - 1) / span_s;
+  double min_period_s = span_s;
+  double max_period_s = 0.0;
+  for (std::size_t i = 1; i < count; ++i) {
+    min_period_s = std::min(min_period_s, log.time_s[i] - log.time_s[i - 1]);
+    max_period_s = std::max(max_period_s, log.time_s[i] - log.time_s[i - 1]);
   }
+  notes.insert(notes.begin(), "BAM raw log: irregular timestamps kept as recorded (period mean " +
+                                  fixed_text(1e3 / meta.rate_hz, 2) + " ms, min " +
+                                  fixed_text(1e3 * min_period_s, 2) + " ms, max " +
+                                  fixed_text(1e3 * max_period_s, 2) +
+                                  " ms); rate_hz is the mean rate");
+}
 
+// BAM's voltage-servo gains for the motor, or a note that BAM has none, plus known remarks.
+void add_motor_facts(BamImport& result, std::vector<std::string>& notes) {
   const auto gains = std::find_if(std::begin(kServoGains), std::end(kServoGains),
                                   [&](const ServoGains& g) { return g.motor == result.motor; });
   if (gains != std::end(kServoGains)) {
-    meta.parameters["bench.error_gain"] = gains->error_gain;
-    meta.parameters["bench.max_duty"] = gains->max_duty;
+    result.log.meta.parameters["bench.error_gain"] = gains->error_gain;
+    result.log.meta.parameters["bench.max_duty"] = gains->max_duty;
     notes.push_back(std::string(gains->source));
   } else {
     notes.push_back("motor '" + result.motor +
@@ -298,11 +282,49 @@ BamImport import_document(const json& doc, const std::string& shown,
   for (const auto& [motor, remark] : kMotorRemarks) {
     if (motor == result.motor) notes.push_back(std::string(remark));
   }
+}
 
-  for (std::size_t i = 0; i < notes.size(); ++i) {
-    meta.notes += (i == 0 ? "" : ". ") + notes[i];
+// `shown` names the file in errors; `origin_path` goes into the sidecar's origin.
+BamImport import_document(const json& doc, const std::string& shown,
+                          const std::string& origin_path) {
+  if (const auto problem = classify(doc)) {
+    throw InputError(
+        shown, 0, problem->field,
+        problem->missing_key ? "missing key (" + problem->looks_like + ")" : problem->looks_like);
   }
-  meta.notes += ".";
+  const Fields fields(shown);
+  const json& entries = fields.required(doc, "entries", "entries");
+  if (!entries.is_array()) {
+    fields.fail("entries", std::string("expected a list, found ") + entries.type_name());
+  }
+
+  BamImport result;
+  std::vector<std::string> notes;
+  JointLog& log = result.log;
+  log.meta.robot = kRobot;
+  log.meta.origin = "imported from BAM " + origin_path;
+  log.meta.parameters["bench.mass_kg"] =
+      fields.positive(fields.required(doc, "mass", "mass"), "mass");
+  log.meta.parameters["bench.length_m"] =
+      fields.positive(fields.required(doc, "length", "length"), "length");
+  if (entries.size() < 2) {
+    fields.fail("entries", "need at least 2 entries, found " + std::to_string(entries.size()));
+  }
+  const std::optional<double> dt_s = read_header(doc, fields, result, notes);
+  const std::optional<std::size_t> torque_off_entry = read_entries(entries, fields, dt_s, log);
+  describe_sampling(dt_s, log, notes);
+  if (torque_off_entry) {
+    result.torque_off_s = log.time_s[*torque_off_entry];
+    log.meta.parameters["bench.torque_off_s"] = *result.torque_off_s;
+    notes.push_back("torque released at t = " + number_text(*result.torque_off_s) + " s (entry " +
+                    std::to_string(*torque_off_entry) +
+                    "); the later goal_position values were logged but not followed");
+  }
+  add_motor_facts(result, notes);
+  for (std::size_t i = 0; i < notes.size(); ++i) {
+    log.meta.notes += (i == 0 ? "" : ". ") + notes[i];
+  }
+  log.meta.notes += ".";
   return result;
 }
 

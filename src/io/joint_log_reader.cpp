@@ -148,9 +148,9 @@ void angle_scale(AngleUnit unit, Column& column) {
   column.declared_rad = unit == AngleUnit::kRad;
 }
 
-Layout parse_header(const std::vector<std::string_view>& names, const Sidecar* sidecar,
-                    const std::string& path, int line) {
-  Layout layout;
+// Every column named, no name twice, and every column the sidecar maps present.
+void check_header_names(const std::vector<std::string_view>& names, const Sidecar* sidecar,
+                        const std::string& path, int line) {
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (names[i].empty()) {
       throw InputError(path, line, "column " + std::to_string(i + 1), "empty column name");
@@ -173,6 +173,33 @@ Layout parse_header(const std::vector<std::string_view>& names, const Sidecar* s
       }
     }
   }
+}
+
+// A joint's .cmd or .meas column: the joint's index (a new joint is added) and its flags; a
+// second column for the same joint and kind is an error.
+void register_joint_column(const std::string& joint, Column& column, Layout& layout,
+                           const std::string& path, int line) {
+  std::size_t index = 0;
+  while (index < layout.joints.size() && layout.joints[index] != joint) ++index;
+  if (index == layout.joints.size()) {
+    layout.joints.push_back(joint);
+    layout.joint_has_commanded.push_back(false);
+    layout.joint_has_measured.push_back(false);
+  }
+  column.joint = index;
+  const bool commanded = column.kind == ColumnKind::kCommanded;
+  std::vector<bool>& has = commanded ? layout.joint_has_commanded : layout.joint_has_measured;
+  if (has[index]) {
+    throw InputError(path, line, column.name, "a second column for '" + column.ours + "'");
+  }
+  has[index] = true;
+  (commanded ? layout.has_commanded : layout.has_measured) = true;
+}
+
+Layout parse_header(const std::vector<std::string_view>& names, const Sidecar* sidecar,
+                    const std::string& path, int line) {
+  check_header_names(names, sidecar, path, line);
+  Layout layout;
   const detail::ColumnUnits units = sidecar != nullptr ? sidecar->units : detail::ColumnUnits{};
   const bool time_anywhere = maps_time(sidecar);
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -209,29 +236,7 @@ Layout parse_header(const std::vector<std::string_view>& names, const Sidecar* s
       column.joint = layout.extras.size();
       layout.extras.push_back(name);
     }
-    if (!joint.empty()) {
-      std::size_t index = 0;
-      while (index < layout.joints.size() && layout.joints[index] != joint) ++index;
-      if (index == layout.joints.size()) {
-        layout.joints.push_back(joint);
-        layout.joint_has_commanded.push_back(false);
-        layout.joint_has_measured.push_back(false);
-      }
-      column.joint = index;
-      if (column.kind == ColumnKind::kCommanded) {
-        if (layout.joint_has_commanded[index]) {
-          throw InputError(path, line, name, "a second column for '" + ours + "'");
-        }
-        layout.joint_has_commanded[index] = true;
-        layout.has_commanded = true;
-      } else {
-        if (layout.joint_has_measured[index]) {
-          throw InputError(path, line, name, "a second column for '" + ours + "'");
-        }
-        layout.joint_has_measured[index] = true;
-        layout.has_measured = true;
-      }
-    }
+    if (!joint.empty()) register_joint_column(joint, column, layout, path, line);
     layout.columns.push_back(column);
   }
   return layout;
@@ -353,6 +358,68 @@ void check_time_axis(JointLog& log, const std::optional<Sidecar>& sidecar,
   }
 }
 
+// Where the data rows are read and every value is checked against its column.
+struct RowContext {
+  const Layout& layout;
+  const std::string& csv_path;
+  const std::string& sidecar_path;
+  bool has_sidecar;
+};
+
+// One data row's values into the log (time strictly increasing, angles scaled to rad).
+void store_row(const std::vector<std::string_view>& fields, int number, const RowContext& context,
+               JointLog& log) {
+  const Layout& layout = context.layout;
+  const std::string& csv_path = context.csv_path;
+  const std::size_t joint_count = layout.joints.size();
+  const std::size_t expected_fields = layout.columns.size();
+  if (fields.size() != expected_fields) {
+    throw InputError(csv_path, number, "row",
+                     "expected " + std::to_string(expected_fields) +
+                         " fields as in the header, found " + std::to_string(fields.size()));
+  }
+  const std::size_t base = log.time_s.size() * joint_count;
+  if (layout.has_commanded) log.commanded_rad.resize(base + joint_count);
+  if (layout.has_measured) log.measured_rad.resize(base + joint_count);
+  const std::size_t extra_base = log.extra_values.size();
+  log.extra_values.resize(extra_base + layout.extras.size());
+  for (std::size_t i = 0; i < expected_fields; ++i) {
+    const Column& column = layout.columns[i];
+    if (column.kind == ColumnKind::kExtra) {
+      log.extra_values[extra_base + column.joint] = std::string(fields[i]);
+      continue;
+    }
+    const double raw = parse_value(fields[i], csv_path, number, column.name);
+    check_not_degrees(raw, column, csv_path, number, context.sidecar_path, context.has_sidecar);
+    const double value = column.scale == 1.0 ? raw : raw * column.scale;
+    switch (column.kind) {
+      case ColumnKind::kTime:
+        if (!log.time_s.empty() && value <= log.time_s.back()) {
+          throw InputError(csv_path, number, column.name,
+                           "time must strictly increase (previous row " +
+                               shortest(log.time_s.back()) + " s, this row " + shortest(value) +
+                               " s)");
+        }
+        log.time_s.push_back(value);
+        break;
+      case ColumnKind::kCommanded:
+        log.commanded_rad[base + column.joint] = value;
+        break;
+      case ColumnKind::kMeasured:
+        log.measured_rad[base + column.joint] = value;
+        break;
+      case ColumnKind::kImuRoll:
+        log.imu_roll_rad.push_back(value);
+        break;
+      case ColumnKind::kImuPitch:
+        log.imu_pitch_rad.push_back(value);
+        break;
+      case ColumnKind::kExtra:
+        break;
+    }
+  }
+}
+
 }  // namespace
 
 std::string joint_log_sidecar_path(const std::string& csv_path) {
@@ -393,58 +460,11 @@ JointLog read_joint_log(const std::string& csv_path, const JointLogRequirements&
   JointLog log;
   log.joint_names = layout.joints;
   log.extra_column_names = layout.extras;
-  const std::size_t joint_count = layout.joints.size();
-  const std::size_t extra_count = layout.extras.size();
-  const std::size_t expected_fields = layout.columns.size();
+  const RowContext context{layout, csv_path, sidecar_path, sidecar.has_value()};
   while (lines.next(line)) {
     if (is_ignored(line)) continue;
-    const int number = lines.number();
     split_fields(line, fields);
-    if (fields.size() != expected_fields) {
-      throw InputError(csv_path, number, "row",
-                       "expected " + std::to_string(expected_fields) +
-                           " fields as in the header, found " + std::to_string(fields.size()));
-    }
-    const std::size_t base = log.time_s.size() * joint_count;
-    if (layout.has_commanded) log.commanded_rad.resize(base + joint_count);
-    if (layout.has_measured) log.measured_rad.resize(base + joint_count);
-    const std::size_t extra_base = log.extra_values.size();
-    log.extra_values.resize(extra_base + extra_count);
-    for (std::size_t i = 0; i < expected_fields; ++i) {
-      const Column& column = layout.columns[i];
-      if (column.kind == ColumnKind::kExtra) {
-        log.extra_values[extra_base + column.joint] = std::string(fields[i]);
-        continue;
-      }
-      const double raw = parse_value(fields[i], csv_path, number, column.name);
-      check_not_degrees(raw, column, csv_path, number, sidecar_path, sidecar.has_value());
-      const double value = column.scale == 1.0 ? raw : raw * column.scale;
-      switch (column.kind) {
-        case ColumnKind::kTime:
-          if (!log.time_s.empty() && value <= log.time_s.back()) {
-            throw InputError(csv_path, number, column.name,
-                             "time must strictly increase (previous row " +
-                                 shortest(log.time_s.back()) + " s, this row " + shortest(value) +
-                                 " s)");
-          }
-          log.time_s.push_back(value);
-          break;
-        case ColumnKind::kCommanded:
-          log.commanded_rad[base + column.joint] = value;
-          break;
-        case ColumnKind::kMeasured:
-          log.measured_rad[base + column.joint] = value;
-          break;
-        case ColumnKind::kImuRoll:
-          log.imu_roll_rad.push_back(value);
-          break;
-        case ColumnKind::kImuPitch:
-          log.imu_pitch_rad.push_back(value);
-          break;
-        case ColumnKind::kExtra:
-          break;
-      }
-    }
+    store_row(fields, lines.number(), context, log);
   }
   if (log.frames() < 2) {
     throw InputError(

@@ -153,6 +153,7 @@ struct Rollout::Impl {
   void build_world();
   void build_bodies();
   void build_joints();
+  void build_flex_joint(std::size_t j);  // spring, damping and friction rows of flex joint j
   void build_actuators(const ParameterSet& values);
   dJointID add_axis_motor(std::size_t actuator);
   void add_damping_row(std::size_t actuator, double damping_nm_s_per_rad);
@@ -250,102 +251,124 @@ void Rollout::Impl::build_bodies() {
   }
 }
 
+namespace {
+
+// A slider, body1 = child: ODE's slider position is body1 relative to body2 along the axis, ours.
+dJointID create_slider(dWorldID world, dBodyID parent, dBodyID child, const JointSpec& spec) {
+  dJointID joint = dJointCreateSlider(world, nullptr);
+  dJointAttach(joint, child, parent);
+  dJointSetSliderAxis(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
+  if (std::isfinite(spec.lower1_rad)) {
+    dJointSetSliderParam(joint, dParamLoStop, spec.lower1_rad);
+    dJointSetSliderParam(joint, dParamHiStop, spec.upper1_rad);
+  }
+  return joint;
+}
+
+// A hinge, body1 = child: ODE's hinge angle is body1 relative to body2, our convention.
+dJointID create_hinge(dWorldID world, dBodyID parent, dBodyID child, const JointSpec& spec) {
+  const Eigen::Vector3d& a = spec.anchor_W0_m;
+  dJointID joint = dJointCreateHinge(world, nullptr);
+  dJointAttach(joint, child, parent);
+  dJointSetHingeAnchor(joint, a.x(), a.y(), a.z());
+  dJointSetHingeAxis(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
+  if (std::isfinite(spec.lower1_rad)) {
+    dJointSetHingeParam(joint, dParamLoStop, spec.lower1_rad);
+    dJointSetHingeParam(joint, dParamHiStop, spec.upper1_rad);
+  }
+  return joint;
+}
+
+// Universal and flex: body1 = parent carries axis 1, body2 = child carries axis 2; ODE then
+// reports both angles with the opposite sign of ours (checked in tests). Stops only for a
+// universal joint.
+dJointID create_universal(dWorldID world, dBodyID parent, dBodyID child, const JointSpec& spec) {
+  const Eigen::Vector3d& a = spec.anchor_W0_m;
+  dJointID joint = dJointCreateUniversal(world, nullptr);
+  dJointAttach(joint, parent, child);
+  dJointSetUniversalAnchor(joint, a.x(), a.y(), a.z());
+  dJointSetUniversalAxis1(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
+  dJointSetUniversalAxis2(joint, spec.axis2_W0.x(), spec.axis2_W0.y(), spec.axis2_W0.z());
+  if (spec.kind != JointKind::kUniversal) return joint;
+  double lo = 0.0, hi = 0.0;
+  if (std::isfinite(spec.lower1_rad)) {
+    ode_limits(-1.0, spec.lower1_rad, spec.upper1_rad, lo, hi);
+    dJointSetUniversalParam(joint, dParamLoStop, lo);
+    dJointSetUniversalParam(joint, dParamHiStop, hi);
+  }
+  if (std::isfinite(spec.lower2_rad)) {
+    ode_limits(-1.0, spec.lower2_rad, spec.upper2_rad, lo, hi);
+    dJointSetUniversalParam(joint, dParamLoStop2, lo);
+    dJointSetUniversalParam(joint, dParamHiStop2, hi);
+  }
+  return joint;
+}
+
+}  // namespace
+
 void Rollout::Impl::build_joints() {
   joints.assign(model.joints.size(), nullptr);
-  const double h = options.dt_s;
   for (std::size_t j = 0; j < model.joints.size(); ++j) {
     const JointSpec& spec = model.joints[j];
     dBodyID parent = bodies[spec.parent_body];
     dBodyID child = bodies[spec.child_body];
-    const Eigen::Vector3d& a = spec.anchor_W0_m;
     if (spec.kind == JointKind::kSlider) {
-      // body1 = child: ODE's slider position is body1 relative to body2 along the axis, ours.
-      dJointID joint = dJointCreateSlider(world, nullptr);
-      dJointAttach(joint, child, parent);
-      dJointSetSliderAxis(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
-      if (std::isfinite(spec.lower1_rad)) {
-        dJointSetSliderParam(joint, dParamLoStop, spec.lower1_rad);
-        dJointSetSliderParam(joint, dParamHiStop, spec.upper1_rad);
-      }
-      joints[j] = joint;
-      continue;
-    }
-    if (spec.kind == JointKind::kHinge) {
-      // body1 = child: ODE's hinge angle is body1 relative to body2, our convention.
-      dJointID joint = dJointCreateHinge(world, nullptr);
-      dJointAttach(joint, child, parent);
-      dJointSetHingeAnchor(joint, a.x(), a.y(), a.z());
-      dJointSetHingeAxis(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
-      if (std::isfinite(spec.lower1_rad)) {
-        dJointSetHingeParam(joint, dParamLoStop, spec.lower1_rad);
-        dJointSetHingeParam(joint, dParamHiStop, spec.upper1_rad);
-      }
-      joints[j] = joint;
-      continue;
-    }
-    // Universal and flex: body1 = parent carries axis 1, body2 = child carries axis 2; ODE then
-    // reports both angles with the opposite sign of ours (checked in tests).
-    dJointID joint = dJointCreateUniversal(world, nullptr);
-    dJointAttach(joint, parent, child);
-    dJointSetUniversalAnchor(joint, a.x(), a.y(), a.z());
-    dJointSetUniversalAxis1(joint, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
-    dJointSetUniversalAxis2(joint, spec.axis2_W0.x(), spec.axis2_W0.y(), spec.axis2_W0.z());
-    joints[j] = joint;
-    if (spec.kind == JointKind::kUniversal) {
-      double lo = 0.0, hi = 0.0;
-      if (std::isfinite(spec.lower1_rad)) {
-        ode_limits(-1.0, spec.lower1_rad, spec.upper1_rad, lo, hi);
-        dJointSetUniversalParam(joint, dParamLoStop, lo);
-        dJointSetUniversalParam(joint, dParamHiStop, hi);
-      }
-      if (std::isfinite(spec.lower2_rad)) {
-        ode_limits(-1.0, spec.lower2_rad, spec.upper2_rad, lo, hi);
-        dJointSetUniversalParam(joint, dParamLoStop2, lo);
-        dJointSetUniversalParam(joint, dParamHiStop2, hi);
-      }
-      continue;
-    }
-    flex_joints.push_back(j);
-    if (options.flex_model == FlexModel::kExplicitCfm) {
-      // The 2011 program's flex rows (motoflex_2011.md §2.9): target 0 and FMax
-      // flexibleFriction, with the CFM the joint copied from the world when it was created
-      // (build_world sets it first), so each row is a damper 1/CFM capped at FMax; the spring
-      // is an explicit torque (apply_flex_springs).
-      dJointSetUniversalParam(joint, dParamFMax, params.flex.friction_nm);
-      dJointSetUniversalParam(joint, dParamFMax2, params.flex.friction_nm);
-      continue;
-    }
-    // Flex joint: the spring −D_B·α and damping (seed 001 eq. 1) are integrated implicitly by
-    // a motor row whose target velocity is −(ERP/h)·α with the matching CFM, i.e. ODE's
-    // spring-damper equivalence ERP = h·k/(h·k + c), CFM = 1/(h·k + c). An explicit torque
-    // would need h·sqrt(D_B/I) < 2, which the small sub-bodies do not meet at 1 ms.
-    const double k = params.flex.spring_nm_per_rad;
-    const double c = params.flex.damping_nm_s_per_rad;
-    const double erp = h * k / (h * k + c);
-    const double cfm = 1.0 / (h * k + c);
-    flex_velocity_gain = erp / h;
-    for (const auto& [fmax, cfm_param] :
-         {std::pair{dParamFMax, dParamCFM}, std::pair{dParamFMax2, dParamCFM2}}) {
-      dJointSetUniversalParam(joint, fmax, dInfinity);
-      dJointSetUniversalParam(joint, cfm_param, cfm);
-    }
-    if (params.flex.friction_nm > 0.0) {
-      // Coulomb damping of the flex joint: a zero-velocity angular motor on both bending axes.
-      dJointID motor = dJointCreateAMotor(world, nullptr);
-      dJointAttach(motor, parent, child);
-      dJointSetAMotorMode(motor, dAMotorUser);
-      dJointSetAMotorNumAxes(motor, 2);
-      dJointSetAMotorAxis(motor, 0, 1, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
-      dJointSetAMotorAxis(motor, 1, 2, spec.axis2_W0.x(), spec.axis2_W0.y(), spec.axis2_W0.z());
-      detail::set_axis_motor_param(motor, dParamVel, 0.0);
-      detail::set_axis_motor_param(motor, dParamVel2, 0.0);
-      detail::set_axis_motor_param(motor, dParamFMax, params.flex.friction_nm);
-      detail::set_axis_motor_param(motor, dParamFMax2, params.flex.friction_nm);
-      flex_friction_motors.push_back(motor);
+      joints[j] = create_slider(world, parent, child, spec);
+    } else if (spec.kind == JointKind::kHinge) {
+      joints[j] = create_hinge(world, parent, child, spec);
+    } else {
+      joints[j] = create_universal(world, parent, child, spec);
+      if (spec.kind != JointKind::kUniversal) build_flex_joint(j);
     }
   }
   joint_torque1.assign(model.joints.size(), 0.0);
   joint_torque2.assign(model.joints.size(), 0.0);
+}
+
+void Rollout::Impl::build_flex_joint(std::size_t j) {
+  const JointSpec& spec = model.joints[j];
+  dJointID joint = joints[j];
+  const double h = options.dt_s;
+  flex_joints.push_back(j);
+  if (options.flex_model == FlexModel::kExplicitCfm) {
+    // The 2011 program's flex rows (motoflex_2011.md §2.9): target 0 and FMax
+    // flexibleFriction, with the CFM the joint copied from the world when it was created
+    // (build_world sets it first), so each row is a damper 1/CFM capped at FMax; the spring
+    // is an explicit torque (apply_flex_springs).
+    dJointSetUniversalParam(joint, dParamFMax, params.flex.friction_nm);
+    dJointSetUniversalParam(joint, dParamFMax2, params.flex.friction_nm);
+    return;
+  }
+  // Flex joint: the spring −D_B·α and damping (seed 001 eq. 1) are integrated implicitly by
+  // a motor row whose target velocity is −(ERP/h)·α with the matching CFM, i.e. ODE's
+  // spring-damper equivalence ERP = h·k/(h·k + c), CFM = 1/(h·k + c). An explicit torque
+  // would need h·sqrt(D_B/I) < 2, which the small sub-bodies do not meet at 1 ms.
+  const double k = params.flex.spring_nm_per_rad;
+  const double c = params.flex.damping_nm_s_per_rad;
+  const double erp = h * k / (h * k + c);
+  const double cfm = 1.0 / (h * k + c);
+  flex_velocity_gain = erp / h;
+  for (const auto& [fmax, cfm_param] :
+       {std::pair{dParamFMax, dParamCFM}, std::pair{dParamFMax2, dParamCFM2}}) {
+    dJointSetUniversalParam(joint, fmax, dInfinity);
+    dJointSetUniversalParam(joint, cfm_param, cfm);
+  }
+  if (params.flex.friction_nm > 0.0) {
+    // Coulomb damping of the flex joint: a zero-velocity angular motor on both bending axes.
+    dBodyID parent = bodies[spec.parent_body];
+    dBodyID child = bodies[spec.child_body];
+    dJointID motor = dJointCreateAMotor(world, nullptr);
+    dJointAttach(motor, parent, child);
+    dJointSetAMotorMode(motor, dAMotorUser);
+    dJointSetAMotorNumAxes(motor, 2);
+    dJointSetAMotorAxis(motor, 0, 1, spec.axis1_W0.x(), spec.axis1_W0.y(), spec.axis1_W0.z());
+    dJointSetAMotorAxis(motor, 1, 2, spec.axis2_W0.x(), spec.axis2_W0.y(), spec.axis2_W0.z());
+    detail::set_axis_motor_param(motor, dParamVel, 0.0);
+    detail::set_axis_motor_param(motor, dParamVel2, 0.0);
+    detail::set_axis_motor_param(motor, dParamFMax, params.flex.friction_nm);
+    detail::set_axis_motor_param(motor, dParamFMax2, params.flex.friction_nm);
+    flex_friction_motors.push_back(motor);
+  }
 }
 
 void Rollout::Impl::build_actuators(const ParameterSet& values) {

@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "cli/cli_test_support.hpp"
 #include "effect_test_support.hpp"
 #include "motoflex/effects/effect_signature.hpp"
 #include "motoflex/model/effect_library.hpp"
+#include "motoflex/model/parameters.hpp"
 
 namespace motoflex::testing {
 namespace {
@@ -18,21 +20,47 @@ struct HiddenCase {
   const char* effect;
   const char* parameter;  // the truth parameter that carries the effect
   double truth;
+  double min_explained;  // about half the measured share of the residual the effect explains
 };
 
+// Measured (every parameter of the effect reset to the robot default): explained 0.963, 0.180,
+// 0.700, 0.075, 0.071; estimate/truth 1.000, 0.938, 0.758, 0.968, 0.918.
 const HiddenCase kCases[] = {
-    {"encoder_offset", "joint.pendulum.encoder_offset_rad", 0.03},
-    {"sensor_delay", "sensor.delay_s", 0.015},
-    {"stribeck", "joint.pendulum.stribeck_nm", 0.08},
-    {"load_friction", "joint.pendulum.load_friction", 0.15},
-    {"resistance_drift", "motor.R_drift_per_s", 0.03},
+    {"encoder_offset", "joint.pendulum.encoder_offset_rad", 0.03, 0.5},
+    {"sensor_delay", "sensor.delay_s", 0.015, 0.09},
+    {"stribeck", "joint.pendulum.stribeck_nm", 0.08, 0.35},
+    {"load_friction", "joint.pendulum.load_friction", 0.15, 0.035},
+    {"resistance_drift", "motor.R_drift_per_s", 0.03, 0.035},
 };
+
+// The truth of `effect`'s recording with EVERY parameter of that effect (e.g. the Stribeck
+// velocity as well as its magnitude) back at the robot's default, so the probe learns nothing
+// from the truth's shape parameters. Returns how many parameters were reset.
+std::size_t reset_effect_parameters(const std::string& effect, const ParameterSet& base,
+                                    ParameterSet& current) {
+  std::size_t reset = 0;
+  if (effect == "none") return reset;
+  const ParameterRegistry& registry = current.registry();
+  for (const EffectParameter& p : find_effect(effect).parameters) {
+    for (std::size_t i = 0; i < registry.size(); ++i) {
+      const std::string& name = registry.spec(i).name;
+      if (!parameter_pattern_matches(p.pattern, name)) continue;
+      current.set(name, base.get(name));
+      ++reset;
+    }
+  }
+  return reset;
+}
 
 EffectRanking rank_at_truth_without(const std::string& effect, const char* parameter) {
   const auto dir = fresh_dir("signature_" + effect);
   const FitConfig config = load_fit_config(write_hidden_bench_fit(dir, effect, "{}"));
   ParameterSet current = hidden_truth(effect, "train/chirp", config.space->base(), true);
-  if (parameter != nullptr) current.set(parameter, config.space->base().get(parameter));
+  const std::size_t reset = reset_effect_parameters(effect, config.space->base(), current);
+  if (parameter != nullptr) {
+    EXPECT_GE(reset, 1u) << effect << ": no parameter of the effect was reset";
+    EXPECT_EQ(current.get(parameter), config.space->base().get(parameter)) << effect;
+  }
   return rank_effects(config, current, {}, 2);
 }
 
@@ -43,14 +71,16 @@ TEST(EffectSignature, TheMissingEffectRanksFirstWithItsMagnitude) {
     const EffectScore& top = ranking.scores.front();
     EXPECT_EQ(top.effect, c.effect);
     EXPECT_LT(top.delta_bic, 0.0) << c.effect;
-    EXPECT_GT(top.explained, 0.05) << c.effect;
+    EXPECT_GT(top.explained, c.min_explained) << c.effect;
     // The linearised estimate of the effect's size points the refit the right way.
     double estimate = 0.0;
     for (const auto& [name, value] : top.estimate) {
       if (name == c.parameter) estimate = value;
     }
-    EXPECT_GT(estimate, 0.3 * c.truth) << c.effect;
-    EXPECT_LT(estimate, 3.0 * c.truth) << c.effect;
+    std::printf("%s: explained %.3f, estimate/truth %.3f, delta BIC %.1f\n", c.effect,
+                top.explained, estimate / c.truth, top.delta_bic);
+    EXPECT_GT(estimate, 0.6 * c.truth) << c.effect;
+    EXPECT_LT(estimate, 1.5 * c.truth) << c.effect;
     // The runner-up explains far less of what re-tuning the fit's own parameters cannot, unless
     // it contains the missing effect: BAM's load-dependent Stribeck friction (M4) has a Stribeck
     // term of its own and explains 40 % where Stribeck explains 72 %.

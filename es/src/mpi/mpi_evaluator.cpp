@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <exception>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -47,6 +48,53 @@ std::unique_ptr<Evaluator> make_local_evaluator(int threads) {
   return std::make_unique<OpenMpEvaluator>(threads);
 }
 
+// This rank's candidates of the batch that rank 0 holds in `flat_xs` (row-major).
+std::vector<std::vector<double>> scatter_candidates(const std::vector<double>& flat_xs,
+                                                    const std::vector<int>& x_counts,
+                                                    const std::vector<int>& x_offsets,
+                                                    std::size_t my_count, std::size_t dimension) {
+  std::vector<double> my_flat(my_count * dimension);
+  MPI_Request request;
+  MPI_Iscatterv(flat_xs.data(), x_counts.data(), x_offsets.data(), MPI_DOUBLE, my_flat.data(),
+                to_int(my_flat.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD, &request);
+  wait_without_spinning(request);
+  std::vector<std::vector<double>> my_xs(my_count);
+  for (std::size_t k = 0; k < my_count; ++k) {
+    my_xs[k].assign(my_flat.begin() + static_cast<std::ptrdiff_t>(k * dimension),
+                    my_flat.begin() + static_cast<std::ptrdiff_t>((k + 1) * dimension));
+  }
+  return my_xs;
+}
+
+// Every rank's error message on rank 0, collectively: per rank the message plus a newline, or
+// empty when that rank had no error (elsewhere an empty list).
+std::vector<std::string> gather_error_messages(bool root, int ranks,
+                                               const std::optional<std::string>& my_error) {
+  const int my_error_length = my_error ? to_int(my_error->size()) + 1 : 0;  // 0: no error
+  std::vector<int> error_lengths(root ? static_cast<std::size_t>(ranks) : 0);
+  MPI_Request request;
+  MPI_Igather(&my_error_length, 1, MPI_INT, error_lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD,
+              &request);
+  wait_without_spinning(request);
+  std::vector<int> error_offsets(error_lengths.size(), 0);
+  int all_error_length = 0;
+  for (std::size_t i = 0; i < error_lengths.size(); ++i) {
+    error_offsets[i] = all_error_length;
+    all_error_length += error_lengths[i];
+  }
+  const std::string my_error_text = my_error ? *my_error + '\n' : std::string();
+  std::string all_error_text(static_cast<std::size_t>(all_error_length), '\0');
+  MPI_Igatherv(my_error_text.data(), my_error_length, MPI_CHAR, all_error_text.data(),
+               error_lengths.data(), error_offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD, &request);
+  wait_without_spinning(request);
+  std::vector<std::string> errors(error_lengths.size());
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    errors[i] = all_error_text.substr(static_cast<std::size_t>(error_offsets[i]),
+                                      static_cast<std::size_t>(error_lengths[i]));
+  }
+  return errors;
+}
+
 // Every rank's part of one batch, collectively; `flat_xs` (batch_size × dimension, row-major)
 // matters on rank 0 only. Returns the gathered outcome on rank 0 (empty elsewhere).
 BatchOutcome exchange_batch(const MpiWorld& world, Problem& problem, Evaluator& local,
@@ -65,16 +113,8 @@ BatchOutcome exchange_batch(const MpiWorld& world, Problem& problem, Evaluator& 
   }
   const BatchSlice mine = batch_slice(header.batch_size, world.rank(), ranks);
 
-  std::vector<double> my_flat(mine.count * dimension);
-  MPI_Request request;
-  MPI_Iscatterv(flat_xs.data(), x_counts.data(), x_offsets.data(), MPI_DOUBLE, my_flat.data(),
-                to_int(my_flat.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD, &request);
-  wait_without_spinning(request);
-  std::vector<std::vector<double>> my_xs(mine.count);
-  for (std::size_t k = 0; k < mine.count; ++k) {
-    my_xs[k].assign(my_flat.begin() + static_cast<std::ptrdiff_t>(k * dimension),
-                    my_flat.begin() + static_cast<std::ptrdiff_t>((k + 1) * dimension));
-  }
+  const std::vector<std::vector<double>> my_xs =
+      scatter_candidates(flat_xs, x_counts, x_offsets, mine.count, dimension);
 
   EvaluationContext context;
   context.generation = header.generation;
@@ -107,26 +147,13 @@ BatchOutcome exchange_batch(const MpiWorld& world, Problem& problem, Evaluator& 
   BatchOutcome outcome;
   const bool root = world.rank() == 0;
   if (root) outcome.fitness.assign(header.batch_size, std::numeric_limits<double>::quiet_NaN());
+  MPI_Request request;
   MPI_Igatherv(my_fitness.data(), to_int(my_fitness.size()), MPI_DOUBLE, outcome.fitness.data(),
                counts.data(), offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD, &request);
   wait_without_spinning(request);
 
-  const int my_error_length = error ? to_int(message.size()) + 1 : 0;  // 0: no error
-  std::vector<int> error_lengths(root ? counts.size() : 0);
-  MPI_Igather(&my_error_length, 1, MPI_INT, error_lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD,
-              &request);
-  wait_without_spinning(request);
-  std::vector<int> error_offsets(error_lengths.size(), 0);
-  int all_error_length = 0;
-  for (std::size_t i = 0; i < error_lengths.size(); ++i) {
-    error_offsets[i] = all_error_length;
-    all_error_length += error_lengths[i];
-  }
-  const std::string my_error_text = error ? message + '\n' : std::string();
-  std::string all_error_text(static_cast<std::size_t>(all_error_length), '\0');
-  MPI_Igatherv(my_error_text.data(), my_error_length, MPI_CHAR, all_error_text.data(),
-               error_lengths.data(), error_offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD, &request);
-  wait_without_spinning(request);
+  const std::vector<std::string> errors = gather_error_messages(
+      root, ranks, error ? std::optional<std::string>(message) : std::nullopt);
 
   std::vector<std::uint64_t> summed(header.counters, 0);
   if (header.counters > 0) {
@@ -140,11 +167,9 @@ BatchOutcome exchange_batch(const MpiWorld& world, Problem& problem, Evaluator& 
     outcome.own_error = error;
     for (int r = 1; r < ranks && outcome.failed_rank < 0; ++r) {
       const auto i = static_cast<std::size_t>(r);
-      if (error_lengths[i] == 0) continue;
+      if (errors[i].empty()) continue;
       outcome.failed_rank = r;
-      outcome.failed_message =
-          all_error_text.substr(static_cast<std::size_t>(error_offsets[i]),
-                                static_cast<std::size_t>(error_lengths[i] - 1));
+      outcome.failed_message = errors[i].substr(0, errors[i].size() - 1);
     }
   }
   return outcome;

@@ -142,6 +142,56 @@ int choose_zmp_trial(const std::vector<Seed001ZmpTrial>& trials) {
   return best;
 }
 
+namespace {
+
+// The ZMP search's trials as jobs appended to `jobs` ((variant slot, setting) of each in
+// `zmp_jobs`), and the walk's own values of the searched options (from the plan of its first
+// loaded run). A value the planner refuses is a trial marked unplannable, not an error.
+Seed001ZmpResult load_zmp_trials(const Seed001Config& config, const std::vector<Seed001Run>& runs,
+                                 const std::vector<int>& job_of_run, std::deque<Job>& jobs,
+                                 std::vector<std::pair<std::size_t, std::size_t>>& zmp_jobs) {
+  Seed001ZmpResult zmp;
+  zmp.walk = config.zmp.walk;
+  const Seed001Walk& walk = walk_named(config, config.zmp.walk);
+  for (const std::string& name : config.zmp.variants) {
+    const Seed001Variant& variant = variant_named(config, name);
+    if (!variant.pending.empty()) continue;
+    zmp.variants.push_back(name);
+    zmp.trials.emplace_back(config.zmp.settings.size());
+    for (std::size_t k = 0; k < config.zmp.settings.size(); ++k) {
+      const Seed001ZmpSetting& setting = config.zmp.settings[k];
+      Seed001ZmpTrial& trial = zmp.trials.back()[k];
+      trial.setting = setting;
+      trial.run.walk = walk.name;
+      trial.run.variant = name;
+      try {
+        jobs.push_back(
+            {walk.name, name, load_variant_walk(variant, walk, {{setting.option, setting.value}})});
+        zmp_jobs.emplace_back(zmp.variants.size() - 1, k);
+      } catch (const InputError& error) {
+        // The same variant and walk loaded above and the option is a walk key (checked with
+        // the config): this value is one the planner refuses, an answer of the search.
+        trial.run.unplannable = error.message();
+      }
+    }
+  }
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    if (runs[r].walk != walk.name || job_of_run[r] < 0) continue;
+    const NaoWalkParams& params = jobs[job_of_run[r]].scenario.walk_plan->params;
+    for (const Seed001ZmpSetting& setting : config.zmp.settings) {
+      bool listed = false;
+      for (const Seed001ZmpSetting& d : zmp.defaults) listed = listed || d.option == setting.option;
+      if (!listed) {
+        zmp.defaults.push_back({setting.option, params.numeric(setting.option).value_or(kNaN)});
+      }
+    }
+    break;
+  }
+  return zmp;
+}
+
+}  // namespace
+
 Seed001Results run_seed001(const Seed001Config& config, int threads) {
   const auto start = std::chrono::steady_clock::now();
   Seed001Results results;
@@ -168,45 +218,7 @@ Seed001Results run_seed001(const Seed001Config& config, int threads) {
   std::vector<std::pair<std::size_t, std::size_t>> zmp_jobs;
   const std::size_t first_zmp_job = jobs.size();
   if (!config.zmp.walk.empty()) {
-    Seed001ZmpResult zmp;
-    zmp.walk = config.zmp.walk;
-    const Seed001Walk& walk = walk_named(config, config.zmp.walk);
-    for (const std::string& name : config.zmp.variants) {
-      const Seed001Variant& variant = variant_named(config, name);
-      if (!variant.pending.empty()) continue;
-      zmp.variants.push_back(name);
-      zmp.trials.emplace_back(config.zmp.settings.size());
-      for (std::size_t k = 0; k < config.zmp.settings.size(); ++k) {
-        const Seed001ZmpSetting& setting = config.zmp.settings[k];
-        Seed001ZmpTrial& trial = zmp.trials.back()[k];
-        trial.setting = setting;
-        trial.run.walk = walk.name;
-        trial.run.variant = name;
-        try {
-          jobs.push_back({walk.name, name,
-                          load_variant_walk(variant, walk, {{setting.option, setting.value}})});
-          zmp_jobs.emplace_back(zmp.variants.size() - 1, k);
-        } catch (const InputError& error) {
-          // The same variant and walk loaded above and the option is a walk key (checked with
-          // the config): this value is one the planner refuses, an answer of the search.
-          trial.run.unplannable = error.message();
-        }
-      }
-    }
-    // The walk's own values of the searched options, from its plan under the first variant.
-    for (std::size_t r = 0; r < results.runs.size(); ++r) {
-      if (results.runs[r].walk != walk.name || job_of_run[r] < 0) continue;
-      const NaoWalkParams& params = jobs[job_of_run[r]].scenario.walk_plan->params;
-      for (const Seed001ZmpSetting& setting : config.zmp.settings) {
-        bool listed = false;
-        for (const Seed001ZmpSetting& d : zmp.defaults)
-          listed = listed || d.option == setting.option;
-        if (!listed)
-          zmp.defaults.push_back({setting.option, params.numeric(setting.option).value_or(kNaN)});
-      }
-      break;
-    }
-    results.zmp = std::move(zmp);
+    results.zmp = load_zmp_trials(config, results.runs, job_of_run, jobs, zmp_jobs);
   }
 
   std::vector<RolloutResult> rollouts = run_jobs(jobs, threads);

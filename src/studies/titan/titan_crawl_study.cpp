@@ -44,6 +44,93 @@ struct Correlation {
   }
 };
 
+// What the crawl study accumulates step by step: energy meters of the three torque methods,
+// the plotted leg's energy exchange between joints 2 and 3, and its last cycle's curves.
+class CrawlObserver {
+ public:
+  CrawlObserver(const TitanCrawlStudyOptions& options, double period_s, double dt_s,
+                TitanCrawlResult& result)
+      : options_(options),
+        period_s_(period_s),
+        dt_s_(dt_s),
+        plot_leg_(static_cast<std::size_t>(options.plot_leg)),
+        result_(result) {}
+
+  void observe(double t, const TitanTorqueProbe* probe) {
+    if (first_) start_x_ = probe->rollout().torso_position_m().x();
+    first_ = false;
+    const double mid = t - 0.5 * dt_s_;  // this step covers (t − dt, t]
+    const int cycle = static_cast<int>(std::floor(mid / period_s_));
+    const double phase = t - cycle * period_s_;
+    for (std::size_t l = 0; l < 4; ++l) observe_leg(l, probe->leg(kTitanLegs[l]), cycle, phase);
+    jacobian_.advance(dt_s_);
+    feedback_.advance(dt_s_);
+    jacobian_serial_.advance(dt_s_);
+    result_.advance_m = probe->rollout().torso_position_m().x() - start_x_;
+  }
+
+  // The energy summaries and exchange figures into the result.
+  void finish() {
+    result_.jacobian = summarise(jacobian_);
+    result_.feedback = summarise(feedback_);
+    result_.jacobian_serial = summarise(jacobian_serial_);
+    const double cycles = options_.periods;
+    const double window_s = (options_.exchange_to_s - options_.exchange_from_s) * cycles;
+    result_.exchange_work_j2_j = exchange_work2_ / cycles;
+    result_.exchange_work_j3_j = exchange_work3_ / cycles;
+    result_.exchange_mean_abs_power_j2_w = exchange_abs2_ / window_s;
+    result_.exchange_mean_abs_power_j3_w = exchange_abs3_ / window_s;
+    result_.exchange_power_correlation = correlation_.value();
+  }
+
+ private:
+  void observe_leg(std::size_t l, const TitanLegSample& s, int cycle, double phase) {
+    const Eigen::Vector3d rate(s.rate_rad_s[0], s.rate_rad_s[1], s.rate_rad_s[2]);
+    const Eigen::Vector3d tau_jac(s.jacobian_torque_nm[0], s.jacobian_torque_nm[1],
+                                  s.jacobian_torque_nm[2]);
+    const Eigen::Vector3d tau_fb(s.feedback_torque_nm[0], s.feedback_torque_nm[1],
+                                 s.feedback_torque_nm[2]);
+    // Seed 000 eq. 1: the hardware's parallel-link knee.
+    const Eigen::Vector3d rate_p = parallel_knee_rates(rate);
+    const Eigen::Vector3d tau_jac_p = parallel_knee_torques(tau_jac);
+    const Eigen::Vector3d tau_fb_p = parallel_knee_torques(tau_fb);
+    const Eigen::Vector3d power_jac = tau_jac_p.cwiseProduct(rate_p);
+    const Eigen::Vector3d power_fb = tau_fb_p.cwiseProduct(rate_p);
+    for (int j = 0; j < 3; ++j) {
+      jacobian_.add(l * 3 + j, power_jac[j], dt_s_);
+      feedback_.add(l * 3 + j, power_fb[j], dt_s_);
+      jacobian_serial_.add(l * 3 + j, tau_jac[j] * rate[j], dt_s_);
+    }
+    if (l != plot_leg_) return;
+    if (phase > options_.exchange_from_s && phase <= options_.exchange_to_s) {
+      exchange_work2_ += power_jac[1] * dt_s_;
+      exchange_work3_ += power_jac[2] * dt_s_;
+      exchange_abs2_ += std::abs(power_jac[1]) * dt_s_;
+      exchange_abs3_ += std::abs(power_jac[2]) * dt_s_;
+      correlation_.add(power_jac[1], power_jac[2]);
+    }
+    if (cycle == options_.periods - 1) {
+      result_.cycle_time_s.push_back(phase);
+      for (int j = 0; j < 3; ++j) {
+        result_.cycle_torque_nm[j].push_back(tau_jac_p[j]);
+        result_.cycle_power_w[j].push_back(power_jac[j]);
+        result_.cycle_feedback_torque_nm[j].push_back(tau_fb_p[j]);
+        result_.cycle_feedback_power_w[j].push_back(power_fb[j]);
+      }
+    }
+  }
+
+  const TitanCrawlStudyOptions& options_;
+  double period_s_, dt_s_;
+  std::size_t plot_leg_;
+  TitanCrawlResult& result_;
+  JointEnergyMeter jacobian_{12}, feedback_{12}, jacobian_serial_{12};
+  double exchange_work2_ = 0.0, exchange_work3_ = 0.0, exchange_abs2_ = 0.0, exchange_abs3_ = 0.0;
+  Correlation correlation_;
+  double start_x_ = 0.0;
+  bool first_ = true;
+};
+
 }  // namespace
 
 TitanCrawlResult run_titan_crawl(const TitanStudySetup& setup,
@@ -62,80 +149,18 @@ TitanCrawlResult run_titan_crawl(const TitanStudySetup& setup,
   const RobotModel& model = *setup.model;
   const TitanKinematics kinematics(model);
   const CommandTrajectory commands = detail::titan_study_commands(setup, kinematics, gait);
-  const double dt = setup.rollout.dt_s;
-  const int last_cycle = options.periods - 1;
-  const auto plot_leg = static_cast<std::size_t>(options.plot_leg);
 
   TitanCrawlResult result;
   result.posture = options.posture;
   result.duration_s = gait.duration_s();
-  JointEnergyMeter jacobian(12), feedback(12), jacobian_serial(12);
-  double exchange_work2 = 0.0, exchange_work3 = 0.0, exchange_abs2 = 0.0, exchange_abs3 = 0.0;
-  Correlation correlation;
-  double start_x = 0.0;
-  bool first = true;
-  const auto observe = [&](double t, const TitanTorqueProbe* probe) {
-    if (first) start_x = probe->rollout().torso_position_m().x();
-    first = false;
-    const double mid = t - 0.5 * dt;  // this step covers (t − dt, t]
-    const int cycle = static_cast<int>(std::floor(mid / T));
-    const double phase = t - cycle * T;
-    for (std::size_t l = 0; l < 4; ++l) {
-      const TitanLegSample& s = probe->leg(kTitanLegs[l]);
-      const Eigen::Vector3d rate(s.rate_rad_s[0], s.rate_rad_s[1], s.rate_rad_s[2]);
-      const Eigen::Vector3d tau_jac(s.jacobian_torque_nm[0], s.jacobian_torque_nm[1],
-                                    s.jacobian_torque_nm[2]);
-      const Eigen::Vector3d tau_fb(s.feedback_torque_nm[0], s.feedback_torque_nm[1],
-                                   s.feedback_torque_nm[2]);
-      // Seed 000 eq. 1: the hardware's parallel-link knee.
-      const Eigen::Vector3d rate_p = parallel_knee_rates(rate);
-      const Eigen::Vector3d tau_jac_p = parallel_knee_torques(tau_jac);
-      const Eigen::Vector3d tau_fb_p = parallel_knee_torques(tau_fb);
-      const Eigen::Vector3d power_jac = tau_jac_p.cwiseProduct(rate_p);
-      const Eigen::Vector3d power_fb = tau_fb_p.cwiseProduct(rate_p);
-      for (int j = 0; j < 3; ++j) {
-        jacobian.add(l * 3 + j, power_jac[j], dt);
-        feedback.add(l * 3 + j, power_fb[j], dt);
-        jacobian_serial.add(l * 3 + j, tau_jac[j] * rate[j], dt);
-      }
-      if (l != plot_leg) continue;
-      if (phase > options.exchange_from_s && phase <= options.exchange_to_s) {
-        exchange_work2 += power_jac[1] * dt;
-        exchange_work3 += power_jac[2] * dt;
-        exchange_abs2 += std::abs(power_jac[1]) * dt;
-        exchange_abs3 += std::abs(power_jac[2]) * dt;
-        correlation.add(power_jac[1], power_jac[2]);
-      }
-      if (cycle == last_cycle) {
-        result.cycle_time_s.push_back(phase);
-        for (int j = 0; j < 3; ++j) {
-          result.cycle_torque_nm[j].push_back(tau_jac_p[j]);
-          result.cycle_power_w[j].push_back(power_jac[j]);
-          result.cycle_feedback_torque_nm[j].push_back(tau_fb_p[j]);
-          result.cycle_feedback_power_w[j].push_back(power_fb[j]);
-        }
-      }
-    }
-    jacobian.advance(dt);
-    feedback.advance(dt);
-    jacobian_serial.advance(dt);
-    result.advance_m = probe->rollout().torso_position_m().x() - start_x;
-  };
+  CrawlObserver observer(options, T, setup.rollout.dt_s, result);
+  const auto observe = [&](double t, const TitanTorqueProbe* probe) { observer.observe(t, probe); };
   const detail::ProbeRunEnd end = detail::run_titan_probe_rollout(
       setup, kinematics, commands, options.settle_s, gait.duration_s(), true, observe);
   result.end = end.end;
   result.end_detail = end.detail;
   result.wall_s = end.wall_s;
-  result.jacobian = summarise(jacobian);
-  result.feedback = summarise(feedback);
-  result.jacobian_serial = summarise(jacobian_serial);
-  const double cycles = options.periods;
-  const double window_s = (options.exchange_to_s - options.exchange_from_s) * cycles;
-  result.exchange_work_j2_j = exchange_work2 / cycles;
-  result.exchange_work_j3_j = exchange_work3 / cycles;
-  result.exchange_mean_abs_power_j2_w = exchange_abs2 / window_s;
-  result.exchange_mean_abs_power_j3_w = exchange_abs3 / window_s;
-  result.exchange_power_correlation = correlation.value();
+  observer.finish();
   return result;
 }
 

@@ -28,6 +28,54 @@ double expected_knee_force_n(const RobotModel& model, const TitanKinematics& kin
   return (total - below_knees) * gravity_m_s2 / 4.0;
 }
 
+// The knee load components the result keeps only as final means.
+struct KneeLoadSeries {
+  std::array<std::vector<double>, 4> fx, fy, mx, my, mz;
+};
+
+// One leg's final means, landing peak, knee-vs-ankle gap and settling times, measured after
+// the touchdown plus the cut.
+void summarise_leg(std::size_t l, const TitanStaticOptions& options, const KneeLoadSeries& loads,
+                   TitanStaticResult& result) {
+  const double window = options.final_window_s;
+  const double from = result.touchdown_s + options.cut_after_touchdown_s;
+  const auto band = [&](double final_value) {
+    return options.converge_fraction *
+           std::max(std::abs(final_value), options.converge_reference_nm);
+  };
+  const std::vector<double>& t = result.time_s;
+  result.knee_force_n[l] = {tail_mean(t, loads.fx[l], window), tail_mean(t, loads.fy[l], window),
+                            tail_mean(t, result.knee_fz_series_n[l], window)};
+  result.knee_moment_nm[l] = {tail_mean(t, loads.mx[l], window), tail_mean(t, loads.my[l], window),
+                              tail_mean(t, loads.mz[l], window)};
+  result.knee_feedback_nm[l] = tail_mean(t, result.knee_feedback_series_nm[l], window);
+  result.knee_jacobian_nm[l] = tail_mean(t, result.knee_jacobian_series_nm[l], window);
+  result.ankle_feedback_nm[l] = tail_mean(t, result.ankle_feedback_series_nm[l], window);
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (t[k] >= result.touchdown_s && t[k] < from &&
+        std::abs(result.knee_feedback_series_nm[l][k]) > std::abs(result.landing_peak_nm[l])) {
+      result.landing_peak_nm[l] = result.knee_feedback_series_nm[l][k];
+    }
+    if (t[k] < from) continue;
+    const double gap = result.knee_feedback_series_nm[l][k] - result.knee_jacobian_series_nm[l][k] -
+                       result.ankle_feedback_series_nm[l][k];
+    result.max_knee_gap_beyond_ankle_nm =
+        std::max(result.max_knee_gap_beyond_ankle_nm, std::abs(gap));
+  }
+  result.feedback_converge_s[l] =
+      settling_time_s(t, result.knee_feedback_series_nm[l], result.knee_feedback_nm[l],
+                      band(result.knee_feedback_nm[l]), from) -
+      result.touchdown_s;
+  result.jacobian_converge_s[l] =
+      settling_time_s(t, result.knee_jacobian_series_nm[l], result.knee_jacobian_nm[l],
+                      band(result.knee_jacobian_nm[l]), from) -
+      result.touchdown_s;
+  const double fz = result.knee_force_n[l].z();
+  result.fz_converge_s[l] = settling_time_s(t, result.knee_fz_series_n[l], fz,
+                                            options.converge_fraction * std::abs(fz), from) -
+                            result.touchdown_s;
+}
+
 }  // namespace
 
 TitanStaticResult run_titan_static(const TitanStudySetup& setup,
@@ -45,7 +93,7 @@ TitanStaticResult run_titan_static(const TitanStudySetup& setup,
 
   TitanStaticResult result;
   result.touchdown_s = std::numeric_limits<double>::quiet_NaN();
-  std::array<std::vector<double>, 4> fx, fy, mx, my, mz;
+  KneeLoadSeries loads;
   double gravity_m_s2 = 0.0;
   const auto observe = [&](double t, const TitanTorqueProbe* probe) {
     if (result.time_s.empty()) {
@@ -59,11 +107,11 @@ TitanStaticResult run_titan_static(const TitanStudySetup& setup,
       result.knee_jacobian_series_nm[l].push_back(s.jacobian_torque_nm[2]);
       result.knee_fz_series_n[l].push_back(s.knee_load.force_n.z());
       result.ankle_feedback_series_nm[l].push_back(s.feedback_torque_nm[3]);
-      fx[l].push_back(s.knee_load.force_n.x());
-      fy[l].push_back(s.knee_load.force_n.y());
-      mx[l].push_back(s.knee_load.moment_nm.x());
-      my[l].push_back(s.knee_load.moment_nm.y());
-      mz[l].push_back(s.knee_load.moment_nm.z());
+      loads.fx[l].push_back(s.knee_load.force_n.x());
+      loads.fy[l].push_back(s.knee_load.force_n.y());
+      loads.mx[l].push_back(s.knee_load.moment_nm.x());
+      loads.my[l].push_back(s.knee_load.moment_nm.y());
+      loads.mz[l].push_back(s.knee_load.moment_nm.z());
       result.max_third_law_residual_n =
           std::max(result.max_third_law_residual_n, s.knee_third_law_residual_n);
       if (std::isnan(result.touchdown_s) && probe->foot_clearance_m(leg) <= 0.0) {
@@ -79,46 +127,7 @@ TitanStaticResult run_titan_static(const TitanStudySetup& setup,
   result.expected_knee_fz_n = expected_knee_force_n(model, kinematics, gravity_m_s2);
   if (result.time_s.empty() || std::isnan(result.touchdown_s)) return result;
 
-  const double window = options.final_window_s;
-  const double from = result.touchdown_s + options.cut_after_touchdown_s;
-  const auto band = [&](double final_value) {
-    return options.converge_fraction *
-           std::max(std::abs(final_value), options.converge_reference_nm);
-  };
-  const std::vector<double>& t = result.time_s;
-  for (std::size_t l = 0; l < 4; ++l) {
-    result.knee_force_n[l] = {tail_mean(t, fx[l], window), tail_mean(t, fy[l], window),
-                              tail_mean(t, result.knee_fz_series_n[l], window)};
-    result.knee_moment_nm[l] = {tail_mean(t, mx[l], window), tail_mean(t, my[l], window),
-                                tail_mean(t, mz[l], window)};
-    result.knee_feedback_nm[l] = tail_mean(t, result.knee_feedback_series_nm[l], window);
-    result.knee_jacobian_nm[l] = tail_mean(t, result.knee_jacobian_series_nm[l], window);
-    result.ankle_feedback_nm[l] = tail_mean(t, result.ankle_feedback_series_nm[l], window);
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      if (t[k] >= result.touchdown_s && t[k] < from &&
-          std::abs(result.knee_feedback_series_nm[l][k]) > std::abs(result.landing_peak_nm[l])) {
-        result.landing_peak_nm[l] = result.knee_feedback_series_nm[l][k];
-      }
-      if (t[k] < from) continue;
-      const double gap = result.knee_feedback_series_nm[l][k] -
-                         result.knee_jacobian_series_nm[l][k] -
-                         result.ankle_feedback_series_nm[l][k];
-      result.max_knee_gap_beyond_ankle_nm =
-          std::max(result.max_knee_gap_beyond_ankle_nm, std::abs(gap));
-    }
-    result.feedback_converge_s[l] =
-        settling_time_s(t, result.knee_feedback_series_nm[l], result.knee_feedback_nm[l],
-                        band(result.knee_feedback_nm[l]), from) -
-        result.touchdown_s;
-    result.jacobian_converge_s[l] =
-        settling_time_s(t, result.knee_jacobian_series_nm[l], result.knee_jacobian_nm[l],
-                        band(result.knee_jacobian_nm[l]), from) -
-        result.touchdown_s;
-    const double fz = result.knee_force_n[l].z();
-    result.fz_converge_s[l] = settling_time_s(t, result.knee_fz_series_n[l], fz,
-                                              options.converge_fraction * std::abs(fz), from) -
-                              result.touchdown_s;
-  }
+  for (std::size_t l = 0; l < 4; ++l) summarise_leg(l, options, loads, result);
   return result;
 }
 
