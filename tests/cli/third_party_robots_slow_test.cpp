@@ -52,8 +52,9 @@ void expect_recovered(const fs::path& fit, const std::map<std::string, double>& 
   EXPECT_TRUE(summary["converged"].get<bool>()) << summary["convergence"];
 }
 
-// The Feetech desk arm (init-robot --servo feetech, fixed base chosen by init-robot).
-// Measured (load ~12 on 2 cores): see the errors in the comment below.
+// The Feetech desk arm (init-robot --servo feetech, fixed base chosen by init-robot). Measured
+// 2026-11-25: converged by tol_fun after 1017 evaluations (~10 min wall at load ~12 on 2 cores),
+// errors -0.27/+0.15 %, +0.57/-0.75 %, +0.26/-0.18 % (Coulomb/viscous per joint).
 TEST(ThirdPartyRobots, FeetechDeskArmRecoversFrictionOfThreeJointsWithinTenPercent) {
   const fs::path fit = run_check("desk_arm");
   // tests/data/robots/third_party/check/desk_arm/truth.yaml.
@@ -65,8 +66,10 @@ TEST(ThirdPartyRobots, FeetechDeskArmRecoversFrictionOfThreeJointsWithinTenPerce
                          {"joint.wrist_flex.viscous_nm_s_per_rad", 0.02}});
 }
 
-// The mesh-footed quadruped (init-robot's defaults: pd_torque, floating base held in the
-// excitation).
+// The mesh-footed quadruped (init-robot's defaults: pd_torque with the stance gains, floating
+// base held in the excitation). Measured 2026-11-25: converged by tol_fun after 621
+// evaluations (~17 min wall at load ~12 on 2 cores), errors +0.61/-1.37 %, -0.36/+2.15 %,
+// -0.84/+0.25 %.
 TEST(ThirdPartyRobots, MeshQuadrupedRecoversFrictionOfThreeJointsWithinTenPercent) {
   const fs::path fit = run_check("quad12");
   // tests/data/robots/third_party/check/quad12/truth.yaml.
