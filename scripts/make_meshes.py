@@ -9,6 +9,7 @@ written deterministically, so regenerating leaves git clean.
 Usage:
   scripts/make_meshes.py --tests    # tests/data/meshes/, tests/data/robots/quadruped/meshes/
   scripts/make_meshes.py --example  # scenarios/robots/mini_arm/meshes/
+  scripts/make_meshes.py --third-party  # tests/data/robots/third_party/*_description/meshes/
   scripts/make_meshes.py --all
 """
 import argparse
@@ -215,17 +216,58 @@ def make_example(out):
     write_stl_binary(os.path.join(out, "gripper.stl"), v, t)
 
 
+def make_third_party(out):
+    """Meshes of the two third-party-style robots (tests/data/robots/third_party): a desk arm
+    and a quadruped, each a ROS-style package whose URDF finds them through package://. As CAD
+    exporters write them: some STL in metres, some COLLADA in millimetres (<unit meter=0.001>),
+    each in its link's frame."""
+    arm = os.path.join(out, "desk_arm_description", "meshes")
+    os.makedirs(os.path.join(arm, "visual"), exist_ok=True)
+    v, t = box(0.10, 0.10, 0.04, (0, 0, 0.02))
+    write_stl_binary(os.path.join(arm, "base_link.stl"), v, t)
+    v, t = box(0.05, 0.045, 0.04, (0, 0, 0.02))
+    write_dae(os.path.join(arm, "shoulder_link.dae"), scaled(v, 1000.0), t, 0.001, "Z_UP")
+    v, t = box(0.03, 0.035, 0.11, (0, 0, 0.055))
+    write_stl_binary(os.path.join(arm, "upper_arm_link.stl"), v, t)
+    v, t = box(0.025, 0.03, 0.10, (0, 0, 0.05))
+    write_dae(os.path.join(arm, "lower_arm_link.dae"), scaled(v, 1000.0), t, 0.001, "Z_UP")
+    v, t = cone(0.018, 0.04)
+    write_stl_ascii(os.path.join(arm, "wrist_link.stl"), v, t)
+    v, t = u_block(0.05, 0.03, 0.04, 0.01)
+    write_dae(os.path.join(arm, "gripper_link.dae"), scaled(v, 1000.0), t, 0.001, "Z_UP")
+    v, t = box(0.008, 0.02, 0.04, (0, 0, 0.02))
+    write_stl_binary(os.path.join(arm, "jaw_link.stl"), v, t)
+    v, t = icosphere(0.012, 2)
+    write_stl_binary(os.path.join(arm, "visual", "camera.stl"), v, t)
+
+    quad = os.path.join(out, "quad12_description", "meshes")
+    os.makedirs(quad, exist_ok=True)
+    v, t = box(0.40, 0.20, 0.10)
+    write_dae(os.path.join(quad, "trunk.dae"), scaled(v, 1000.0), t, 0.001, "Z_UP")
+    v, t = box(0.06, 0.05, 0.05)
+    write_stl_binary(os.path.join(quad, "hip.stl"), v, t)
+    v, t = box(0.035, 0.03, 0.16, (0, 0, -0.08))
+    write_dae(os.path.join(quad, "thigh.dae"), scaled(v, 1000.0), t, 0.001, "Z_UP")
+    v, t = box(0.02, 0.02, 0.15, (0, 0, -0.075))
+    write_stl_binary(os.path.join(quad, "shank.stl"), v, t)
+    v, t = icosphere(0.02, 2)  # 162 vertices: decimated to the hull limit
+    write_stl_binary(os.path.join(quad, "foot.stl"), v, t)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--tests", action="store_true")
     parser.add_argument("--example", action="store_true")
+    parser.add_argument("--third-party", action="store_true")
     parser.add_argument("--all", action="store_true")
     args = parser.parse_args()
     if args.tests or args.all:
         make_tests(os.path.join(ROOT, "tests", "data", "meshes"))
     if args.example or args.all:
         make_example(os.path.join(ROOT, "scenarios", "robots", "mini_arm", "meshes"))
+    if args.third_party or args.all:
+        make_third_party(os.path.join(ROOT, "tests", "data", "robots", "third_party"))
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 #include "fit_console.hpp"
 #include "motoflex/core/error.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -51,7 +52,10 @@ int run_fit_on_console(FitConfig config, bool resume, motoflex_es::Evaluator* ev
     std::printf("done (%s): best fitness %.6g after %llu evaluations; see %s/summary.json\n",
                 summary.stop_reason.c_str(), summary.best_fitness,
                 static_cast<unsigned long long>(summary.evaluations), dir.c_str());
-    std::printf("%s\n", summary.convergence.c_str());
+    // The parameter table (start, fitted, bounds, sensitivity, undetermined ones named) and the
+    // rest of full_report(), after its brief first line: what a user reads first.
+    const std::string report = summary.full_report();
+    std::printf("%s", report.substr(std::min(report.size(), report.find('\n') + 1)).c_str());
   }
   if (summary.invalid_candidates > 0) {
     std::printf("%llu invalid candidate(s) scored worst (the model rejected them), e.g. %s\n",

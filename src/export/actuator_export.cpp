@@ -31,6 +31,10 @@ double subtree_inertia_kg_m2(const RobotModel& model, std::size_t actuator) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     if (!in_subtree(model, static_cast<int>(b), spec.joint)) continue;
     const BodySpec& body = model.bodies[b];
+    if (spec.prismatic) {  // a slider moves the subtree's mass along its axis
+      inertia += body.mass_kg;
+      continue;
+    }
     Eigen::Vector3d r = body.com_W0_m - joint.anchor_W0_m;
     r -= axis * axis.dot(r);
     inertia += body.mass_kg * r.squaredNorm() + axis.dot(body.inertia_kg_m2 * axis);
@@ -49,6 +53,7 @@ std::vector<ActuatorExport> export_actuators(const ExportInput& input) {
     ActuatorExport& a = out[i];
     a.joint = spec.name;
     a.group = spec.group;
+    a.prismatic = spec.prismatic;
     // A robot without joint stops (robot.yaml joint_stops: false) exports none either.
     a.limited = model.joint_stops && std::isfinite(spec.lower_rad) && std::isfinite(spec.upper_rad);
     a.lower_rad = a.limited ? spec.lower_rad : 0.0;

@@ -24,10 +24,24 @@ std::string lower(std::string text) {
   return text;
 }
 
-// MuJoCo 2.2.2 reads STL, OBJ and its own MSH; everything else is converted to STL.
+// A binary STL is 84 bytes of header and triangle count, then 50 bytes per triangle; an ASCII
+// STL ("solid ...") practically never has that size.
+bool is_binary_stl(const std::string& path) {
+  std::error_code error;
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (error || size < 84) return false;
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(80);
+  std::uint32_t count = 0;
+  in.read(reinterpret_cast<char*>(&count), sizeof count);
+  return in && size == 84 + 50 * static_cast<std::uintmax_t>(count);
+}
+
+// MuJoCo 2.2.2 reads binary STL, OBJ and its own MSH; everything else (COLLADA, ASCII STL as
+// CAD exporters write it: "number of faces should be between 1 and 200000") becomes binary STL.
 bool copied_as_is(const std::string& path) {
   const std::string extension = lower(fs::path(path).extension().string());
-  return extension == ".stl" || extension == ".obj";
+  return extension == ".obj" || (extension == ".stl" && is_binary_stl(path));
 }
 
 // Each distinct mesh file of the robot (visual and collision shapes, model order) with the

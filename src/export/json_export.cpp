@@ -49,7 +49,7 @@ std::string export_json(const ExportInput& input) {
                        {"effort_nm", a.effort_nm},
                        {"velocity_rad_s", a.velocity_rad_s},
                        {"reduction", a.reduction},
-                       {"armature_kg_m2", a.armature_kg_m2},
+                       {a.prismatic ? "armature_kg" : "armature_kg_m2", a.armature},
                        {"servo_kp_nm_per_rad", a.kp_nm_per_rad},
                        {"servo_kv_nm_s_per_rad", a.kv_nm_s_per_rad}};
   }

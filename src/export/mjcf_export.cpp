@@ -54,7 +54,7 @@ struct Writer {
       joint.attribute("limited", "false");
     }
     joint.attribute("damping", a.damping_nm_s_per_rad).attribute("frictionloss", a.friction_nm);
-    joint.attribute("armature", options.armature ? a.armature_kg_m2 : 0.0);
+    joint.attribute("armature", options.armature ? a.armature : 0.0);
   }
 
   void add_flex_joint(XmlElement& body, const std::string& name, const Eigen::Vector3d& pos,

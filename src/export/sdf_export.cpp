@@ -164,7 +164,7 @@ void add_servo_extension(XmlElement& joint, const ActuatorExport& a, const std::
       .attribute("kp_nm_per_rad", a.kp_nm_per_rad)
       .attribute("kv_nm_s_per_rad", a.kv_nm_s_per_rad)
       .attribute("effort_nm", a.effort_nm)
-      .attribute("armature_kg_m2", a.armature_kg_m2)
+      .attribute(a.prismatic ? "armature_kg" : "armature_kg_m2", a.armature)
       .attribute("reduction", a.reduction);
   // The bench's armature is already in the arm link's inertia (as in motoflex's ODE body).
   if (servo_law(servo).point_mass_arm) element.attribute("armature_in_child_link", "true");

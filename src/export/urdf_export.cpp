@@ -96,7 +96,7 @@ void add_model_extension(TiXmlElement* robot, const ExportInput& input,
     joint->SetAttribute("group", a.group.c_str());
     set(joint, "servo_kp_nm_per_rad", a.kp_nm_per_rad);
     set(joint, "servo_kv_nm_s_per_rad", a.kv_nm_s_per_rad);
-    set(joint, "armature_kg_m2", a.armature_kg_m2);
+    set(joint, a.prismatic ? "armature_kg" : "armature_kg_m2", a.armature);
   }
   const ParameterRegistry& registry = input.parameters.registry();
   for (std::size_t i = 0; i < registry.size(); ++i) {

@@ -99,6 +99,11 @@ std::vector<BodySpec> build_bodies(const UrdfTree& tree, const Lumping& lumping,
     if (b == bodies.size()) {
       bodies.emplace_back();
       bodies.back().name = tree.links[link].name;
+    } else if (tree.links[tree.link_index(bodies[b].name)].is_frame_link() &&
+               !tree.links[link].is_frame_link()) {
+      // Named after its first physical link, not a frame link lumped into it: a URDF's massless
+      // `world` root welded to `base_link` is the body `base_link` (MJCF and SDF reserve "world").
+      bodies[b].name = tree.links[link].name;
     }
     bodies[b].links.push_back(tree.links[link].name);
   }

@@ -36,8 +36,9 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   for (const auto& a : model.actuators) {
     const std::string joint = "joint." + a.name + ".";
     // Reflected rotor inertia J_rotor·σ² about the joint axis (every law but bench, whose arm
-    // carries bench.armature_kg_m2); MX-106 0.027, eRob80 up to 1.1 kg·m² (bam.md §2f).
-    add(joint + "armature_kg_m2", 0.0, 0.0, 0.1);
+    // carries bench.armature_kg_m2); MX-106 0.027, eRob80 up to 1.1 kg·m² (bam.md §2f). On a
+    // slider it is a mass (joint.<J>.armature_kg: J_rotor·σ² with σ in rad/m).
+    add(joint_parameter(a, "armature", joint_units(a).inertia), 0.0, 0.0, 0.1);
     // BAM's friction family (bam.md §2d; src/sim/actuator/friction_family.hpp). The exponent 2
     // is the Gaussian Stribeck curve of stribeck_nm; the model 6 is the most general, which
     // with these zero coefficients is Coulomb + viscous. Bounds: BAM's search bounds.
@@ -133,6 +134,7 @@ const DomainRule kDomainRules[] = {
     {"delay_s", false, kNonNegative},
     {"encoder_scale", false, kPositive},
     {"armature_kg_m2", false, kNonNegative},
+    {"armature_kg", false, kNonNegative},  // a slider's reflected mass
     {"supply_v", false, kNonNegative},
     {"supply_sag_ohm", false, kNonNegative},
     {"current_limit_a", false, kNonNegative},

@@ -158,7 +158,7 @@ struct Rollout::Impl {
   dJointID add_axis_motor(std::size_t actuator);
   void add_damping_row(std::size_t actuator, double damping_nm_s_per_rad);
   void add_mimic_couplings();
-  void add_inertia_row(std::size_t actuator, double armature_kg_m2);
+  void add_inertia_row(std::size_t actuator, double armature);
   void update_inertia_rows();
   double external_torque_nm(std::size_t actuator) const;
   void place(const std::vector<double>& pose_rad);
@@ -385,8 +385,8 @@ void Rollout::Impl::build_actuators(const ParameterSet& values) {
     const ServoLaw& servo = *servos.back();
     const double damping_nm_s_per_rad = servo.damping_row_nm_s_per_rad();
     if (damping_nm_s_per_rad > 0.0) add_damping_row(i, damping_nm_s_per_rad);
-    const double armature_kg_m2 = servo.armature_kg_m2();
-    if (armature_kg_m2 > 0.0) add_inertia_row(i, armature_kg_m2);
+    const double armature = servo.armature();  // kg·m², or kg on a slider
+    if (armature > 0.0) add_inertia_row(i, armature);
     if (servo.has_friction_row()) {
       axis_rows[i].friction = add_axis_motor(i);
       detail::set_axis_motor_param(axis_rows[i].friction, dParamVel, 0.0);
@@ -428,21 +428,22 @@ void Rollout::Impl::add_mimic_couplings() {
   }
 }
 
-void Rollout::Impl::add_inertia_row(std::size_t actuator, double armature_kg_m2) {
-  // The armature J as joint-space inertia (MuJoCo's armature: J·q̈ on the joint's own equation,
-  // no coupling to the other joints). ODE solves a motor row to J·v₁ = v_target − CFM·λ, so a row
-  // that targets the rate at the start of the step, with unbounded force and CFM = h/J, applies
-  // λ = −J·(v₁ − v₀)/h: the rotor's inertial reaction, implicitly, whatever J·h/I. The joint's
-  // equation becomes (I + J)·(v₁ − v₀)/h = τ, exactly as if J were added to the inertia it
-  // moves (tests/sim/armature_test.cpp). The alternative, a rotor body on the parent coupled 1:1
-  // to the child by a transmission joint, costs a body and a constraint per joint and couples
-  // the joint to the parent's rotation with the whole J, where a real rotor (J/N² spinning at
-  // N·q̇) couples with J/N only; MuJoCo's armature, which the MJCF export writes, has neither.
+void Rollout::Impl::add_inertia_row(std::size_t actuator, double armature) {
+  // The armature J (kg·m², or a mass in kg on a slider) as joint-space inertia (MuJoCo's armature:
+  // J·q̈ on the joint's own equation, no coupling to the other joints). ODE solves a motor row to
+  // J·v₁ = v_target − CFM·λ, so a row that targets the rate at the start of the step, with
+  // unbounded force and CFM = h/J, applies λ = −J·(v₁ − v₀)/h: the rotor's inertial reaction,
+  // implicitly, whatever J·h/I. The joint's equation becomes (I + J)·(v₁ − v₀)/h = τ, exactly as if
+  // J were added to the inertia it moves (tests/sim/armature_test.cpp). The alternative, a rotor
+  // body on the parent coupled 1:1 to the child by a transmission joint, costs a body and a
+  // constraint per joint and couples the joint to the parent's rotation with the whole J, where a
+  // real rotor (J/N² spinning at N·q̇) couples with J/N only; MuJoCo's armature, which the MJCF
+  // export writes, has neither.
   axis_rows[actuator].inertia = add_axis_motor(actuator);
   dJointID motor = axis_rows[actuator].inertia;
   detail::set_axis_motor_param(motor, dParamVel, 0.0);
   detail::set_axis_motor_param(motor, dParamFMax, dInfinity);
-  detail::set_axis_motor_param(motor, dParamCFM, options.dt_s / armature_kg_m2);
+  detail::set_axis_motor_param(motor, dParamCFM, options.dt_s / armature);
 }
 
 void Rollout::Impl::update_inertia_rows() {

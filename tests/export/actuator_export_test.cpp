@@ -33,7 +33,7 @@ TEST(ActuatorExport, MotoflexServoLinearisedAtTheNaoDefaults) {
   EXPECT_NEAR(roll.damping_nm_s_per_rad, 1.9e-5 * 201.3 * 201.3, 1e-9);  // B·σ²
   EXPECT_NEAR(roll.friction_nm, 1.0, 1e-12);
   EXPECT_NEAR(roll.reduction, 201.3, 1e-12);
-  EXPECT_NEAR(roll.armature_kg_m2, 1.0e-3, 1e-15);
+  EXPECT_NEAR(roll.armature, 1.0e-3, 1e-15);
   EXPECT_NEAR(roll.velocity_rad_s, roll.effort_nm / roll.damping_nm_s_per_rad, 1e-12);
   EXPECT_FALSE(roll.command_is_next_angle);
   // LKneePitch: gear B (σ = 130.85).
@@ -54,7 +54,7 @@ TEST(ActuatorExport, BenchServoLinearisedAtTheXl330Defaults) {
   EXPECT_NEAR(a.effort_nm, kt * u / r, 1e-12);  // 1.71 N·m stall torque (README)
   EXPECT_NEAR(a.damping_nm_s_per_rad, 0.05 + kt * kt / r, 1e-12);  // viscous + back-EMF
   EXPECT_NEAR(a.friction_nm, 0.05, 1e-15);
-  EXPECT_NEAR(a.armature_kg_m2, 0.005, 1e-15);
+  EXPECT_NEAR(a.armature, 0.005, 1e-15);
   EXPECT_EQ(a.reduction, 1.0);
 }
 
@@ -79,7 +79,7 @@ TEST(ActuatorExport, DynamixelLinearisedLikeTheBenchItReproduces) {
   EXPECT_NEAR(dynamixel.effort_nm, bench.effort_nm, 1e-12);
   EXPECT_NEAR(dynamixel.damping_nm_s_per_rad, bench.damping_nm_s_per_rad, 1e-12);
   EXPECT_EQ(dynamixel.friction_nm, bench.friction_nm);
-  EXPECT_EQ(dynamixel.armature_kg_m2, 0.005);
+  EXPECT_EQ(dynamixel.armature, 0.005);
   // The D register: kd/16 PWM counts per tick of change per 1 ms cycle, through g·U/885.
   input.parameters.set("servo.pendulum.kd", 32.0);
   input.parameters.set("servo.pendulum.gear_ratio", 10.0);

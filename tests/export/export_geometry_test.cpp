@@ -125,45 +125,71 @@ TEST(ExportGeometry, SdfLinksCarryVisualsWithTheExportedMeshes) {
   }
 }
 
-TEST(ExportGeometry, DaeVisualIsConvertedToAnStlMujocoReadsAtItsSize) {
-  // A 100 mm cube authored in millimetres (COLLADA <unit meter="0.001">) on a 1 kg box link.
-  const auto dir = testing::fresh_export_dir("dae_robot");
-  const std::string visual = "<visual><geometry><mesh filename=\"" +
-                             testing::mesh_path("cube_100mm_in_mm.dae") +
-                             "\"/></geometry></visual>";
+// A one-hinge robot whose cube link (1 kg, 100 mm) shows `mesh_xml` as its visual.
+RobotModel mesh_visual_robot(const std::string& name, const std::string& mesh_xml) {
+  const auto dir = testing::fresh_export_dir(name + "_robot");
+  const std::string visual = "<visual><geometry>" + mesh_xml + "</geometry></visual>";
   testing::write_file(
-      dir / "dae.urdf",
-      testing::robot("dae",
+      dir / (name + ".urdf"),
+      testing::robot(name,
                      testing::link("base", testing::box_inertial(1.0, 0.1, 0.1, 0.1)) +
                          testing::link("cube", testing::box_inertial(1.0, 0.1, 0.1, 0.1) + visual) +
                          testing::joint("hinge", "revolute", "base", "cube",
                                         "<axis xyz=\"0 0 1\"/><limit lower=\"-1\" "
                                         "upper=\"1\" effort=\"1\" velocity=\"1\"/>")));
   testing::write_file(dir / "robot.yaml",
-                      "name: dae\nurdf: dae.urdf\nroot_link: base\nfixed_base: true\n"
-                      "servo: ideal\nactuated_joints:\n  - {joint: hinge, group: g}\n" +
+                      "name: " + name + "\nurdf: " + name +
+                          ".urdf\nroot_link: base\nfixed_base: true\n"
+                          "servo: ideal\nactuated_joints:\n  - {joint: hinge, group: g}\n" +
                           testing::ideal_parameters());
-  const RobotModel model = load_robot_model(dir.string(), StructureOptions{});
+  return load_robot_model(dir.string(), StructureOptions{});
+}
+
+// MuJoCo turns a mesh onto its principal axes (any for a cube), so the size is checked by the
+// longest vertex distance: the cube's space diagonal.
+double longest_vertex_distance_m(const mjModel& m, int mesh) {
+  const int first = m.mesh_vertadr[mesh];
+  double longest_m = 0.0;
+  for (int a = first; a < first + m.mesh_vertnum[mesh]; ++a) {
+    for (int b = first; b < a; ++b) {
+      double squared = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        const double d = m.mesh_vert[3 * a + k] - m.mesh_vert[3 * b + k];
+        squared += d * d;
+      }
+      longest_m = std::max(longest_m, std::sqrt(squared));
+    }
+  }
+  return longest_m;
+}
+
+TEST(ExportGeometry, DaeVisualIsConvertedToAnStlMujocoReadsAtItsSize) {
+  // A 100 mm cube authored in millimetres (COLLADA <unit meter="0.001">).
+  const RobotModel model = mesh_visual_robot(
+      "dae", "<mesh filename=\"" + testing::mesh_path("cube_100mm_in_mm.dae") + "\"/>");
   const auto path = write_export(model, "mjcf", "dae");
   EXPECT_TRUE(std::filesystem::exists(path.parent_path() / "dae_meshes/cube_100mm_in_mm.stl"));
   const ModelPtr m = load_from_disk(path);
   ASSERT_TRUE(m);
   ASSERT_EQ(m->nmesh, 1);
-  // MuJoCo turns a mesh onto its principal axes (any for a cube), so the size is checked by
-  // the longest vertex distance: the cube's space diagonal, 0.1·√3 m.
-  const int first = m->mesh_vertadr[0];
-  double diagonal_m = 0.0;
-  for (int a = first; a < first + m->mesh_vertnum[0]; ++a) {
-    for (int b = first; b < a; ++b) {
-      double squared = 0.0;
-      for (int k = 0; k < 3; ++k) {
-        const double d = m->mesh_vert[3 * a + k] - m->mesh_vert[3 * b + k];
-        squared += d * d;
-      }
-      diagonal_m = std::max(diagonal_m, std::sqrt(squared));
-    }
-  }
-  EXPECT_NEAR(diagonal_m, 0.1 * std::sqrt(3.0), 1e-6);  // measured: equal to 2e-9 (float STL)
+  EXPECT_NEAR(longest_vertex_distance_m(*m, 0), 0.1 * std::sqrt(3.0), 1e-6);  // measured 2e-9
+}
+
+TEST(ExportGeometry, AsciiStlIsConvertedToABinaryStlMujocoReads) {
+  // The same cube as an ASCII STL in millimetres with the URDF's scale 0.001: MuJoCo 2.2.2
+  // rejects ASCII STL ("number of faces should be between 1 and 200000"), found on the
+  // third-party desk arm's wrist mesh; the export writes it as binary STL, the scale kept.
+  const RobotModel model =
+      mesh_visual_robot("ascii", "<mesh filename=\"" + testing::mesh_path("cube_mm_ascii.stl") +
+                                     "\" scale=\"0.001 0.001 0.001\"/>");
+  const auto path = write_export(model, "mjcf", "ascii");
+  const auto stl = path.parent_path() / "ascii_meshes/cube_mm_ascii.stl";
+  ASSERT_TRUE(std::filesystem::exists(stl));
+  EXPECT_EQ(std::filesystem::file_size(stl), 84u + 50u * 12u);  // 12 triangles, binary
+  const ModelPtr m = load_from_disk(path);
+  ASSERT_TRUE(m);
+  ASSERT_EQ(m->nmesh, 1);
+  EXPECT_NEAR(longest_vertex_distance_m(*m, 0), 0.1 * std::sqrt(3.0), 1e-6);
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ void expect_actuated_values(const ExportInput& input, const mjModel& m) {
     const int joint = mj_name2id(&m, mjOBJ_JOINT, a.joint.c_str());
     ASSERT_GE(joint, 0) << a.joint;
     const int dof = m.jnt_dofadr[joint];
-    EXPECT_EQ(m.dof_armature[dof], a.armature_kg_m2) << a.joint;
+    EXPECT_EQ(m.dof_armature[dof], a.armature) << a.joint;
     EXPECT_EQ(m.dof_damping[dof], a.damping_nm_s_per_rad) << a.joint;
     EXPECT_EQ(m.dof_frictionloss[dof], a.friction_nm) << a.joint;
     EXPECT_EQ(m.jnt_limited[joint], a.limited ? 1 : 0) << a.joint;

@@ -53,6 +53,9 @@ TEST(InitRobotTest, ArmGetsEveryMovableJointAndItsAssumptionsListed) {
   EXPECT_TRUE(model.actuators.back().prismatic);
   EXPECT_TRUE(assumed(result, "base", "fixed"));
   EXPECT_TRUE(assumed(result, "frame links", "world"));
+  // The welded base is named after its first physical link, not the massless `world` root (a
+  // body "world" made MuJoCo reject the MJCF export: MJCF and SDF reserve the name).
+  EXPECT_EQ(model.bodies[model.root_body].name, "base_link");
   EXPECT_TRUE(assumed(result, "frame links", "tool0"));
   EXPECT_TRUE(assumed(result, "finger_right_joint", "mimic"));
   EXPECT_TRUE(assumed(result, "shoulder_pan effort", "placeholder"));  // 1000 N·m
@@ -83,10 +86,9 @@ TEST(InitRobotTest, QuadrupedStandsOnItsMeshFeet) {
   RobotInitOptions options;
   options.urdf_path = data("quadruped/urdf/quad.urdf");
   options.out_dir = testing::fresh_dir("init_quad").string();
-  // The law this test was written with (seed 000's stiff velocity servo): the drop below is about
-  // the mesh feet and the contacts. Under init-robot's default pd_torque (kp = effort/0.1 rad,
-  // kd 0.5) the hind calf capsule touches the ground 0.12 s after the drop (issue 18: open).
-  options.servo = "velocity";
+  // init-robot's default law, pd_torque, with the stance gains of a floating base
+  // (stance_gains.hpp; before them the hind calf capsule touched the ground 0.12 s after the
+  // drop).
   const RobotInitResult result = init_robot(options);
   EXPECT_EQ(result.check.end, RolloutEnd::kCompleted) << result.check.end_detail;
   EXPECT_TRUE(assumed(result, "base", "floating"));

@@ -106,6 +106,30 @@ TEST(JointKindsTest, PrismaticJointFrictionInNewtonsSlowsAndHoldsTheSlide) {
   EXPECT_NEAR(slide_with(3.0), 0.0, 1e-9);
 }
 
+// A slider's armature is a reflected mass, joint.<J>.armature_kg (not kg·m²): with m_a kg of
+// it the 0.5 kg block under the 2.4525 N of gravity along the incline accelerates at
+// F/(m_link + m_a), exactly (the inertia row is implicit: (m + m_a)·(v₁ − v₀)/h = F).
+TEST(JointKindsTest, PrismaticArmatureIsAMassThatScalesTheAcceleration) {
+  const RobotModel model =
+      load_robot(slider_folder("slide_armature", "lower=\"-5\" upper=\"5\""), {});
+  ASSERT_TRUE(model.parameters.contains("joint.slide.armature_kg"));
+  EXPECT_FALSE(model.parameters.contains("joint.slide.armature_kg_m2"));
+  const double force_n = 0.5 * kGravity_m_s2 * 0.5;  // m·g·sin 30°
+  const double n = 500.0, h = 1e-3;
+  for (const double armature_kg : {0.0, 0.5, 2.0}) {
+    ParameterSet values(model.parameters);
+    values.set("joint.slide.armature_kg", armature_kg);
+    RolloutOptions options;
+    options.servo.clear();
+    Rollout rollout(model, values, options, {0.0});
+    const double hold = 0.0;
+    for (int k = 0; k < 500; ++k) EXPECT_TRUE(rollout.step(&hold, &hold));
+    const double a = force_n / (0.5 + armature_kg);
+    // Measured: |error| < 1e-15 m for each (semi-implicit Euler, q_n = −a·h²·n(n+1)/2).
+    EXPECT_NEAR(rollout.joint_angle_rad(0), -a * h * h * n * (n + 1) / 2, 1e-12) << armature_kg;
+  }
+}
+
 TEST(JointKindsTest, PrismaticJointStopsAtItsLimitUnlessStopsAreOff) {
   const RobotModel stopped = load_robot(slider_folder("stop", "lower=\"-0.2\" upper=\"0.2\""), {});
   EXPECT_NEAR(slide(stopped, 1.0).back(), -0.2, 1e-9);  // measured 1.2e-12

@@ -45,10 +45,10 @@ namespace motoflex {
 // not on the joint, so this adds inertia that the ODE rollout does not see (the servo is heavily
 // overdamped, so its effect on tracking is small; measured in tests/export/). The bench's
 // `bench.armature_kg_m2` is its rotor inertia already reflected through the gear (BAM). Every
-// other law adds the joint's own `joint.<J>.armature_kg_m2` (the rollout's joint-space inertia
-// row, which is MuJoCo's armature exactly); the stiff ideal/velocity PD counts it in the inertia
-// it moves. pd_torque and the firmware laws (dynamixel, feetech) are linearised in their rule
-// files (src/export/servo/).
+// other law adds the joint's own `joint.<J>.armature_kg_m2` (`armature_kg` on a slider; the
+// rollout's joint-space inertia row, which is MuJoCo's armature exactly); the stiff ideal/velocity
+// PD counts it in the inertia it moves. pd_torque and the firmware laws (dynamixel, feetech) are
+// linearised in their rule files (src/export/servo/).
 //
 // Not representable and dropped: the PID integral, the motor inductance, the gear's backlash,
 // spring and damped small mass, Stribeck and load-dependent friction, sensor effects, and the
@@ -66,9 +66,10 @@ struct ActuatorExport {
   double effort_nm = 0.0;             // torque limit of the servo
   double velocity_rad_s = 0.0;        // no-load speed effort/damping; 0 when the model has no limit
   double reduction = 1.0;             // gear ratio σ (1 for the joint-side bench and ideal models)
-  double armature_kg_m2 = 0.0;
-  double kp_nm_per_rad = 0.0;          // linearised servo stiffness
-  double kv_nm_s_per_rad = 0.0;        // linearised servo damping (on the joint rate)
+  double armature = 0.0;              // reflected rotor inertia: kg·m² on a hinge, kg on a slider
+  bool prismatic = false;             // a slider: lengths in m, efforts in N, the armature a mass
+  double kp_nm_per_rad = 0.0;         // linearised servo stiffness
+  double kv_nm_s_per_rad = 0.0;       // linearised servo damping (on the joint rate)
   bool command_is_next_angle = false;  // ideal servo: the target is the angle at step end
 };
 
@@ -84,7 +85,8 @@ struct FlexExport {
 std::vector<ActuatorExport> export_actuators(const ExportInput& input);
 FlexExport export_flex(const ExportInput& input);
 
-// Inertia about the joint axis of everything `actuator` moves, in the build pose (kg·m²).
+// Inertia about the joint axis of everything `actuator` moves, in the build pose (kg·m²); for a
+// slider the mass it moves (kg).
 double subtree_inertia_kg_m2(const RobotModel& model, std::size_t actuator);
 
 }  // namespace motoflex

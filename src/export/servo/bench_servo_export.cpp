@@ -17,7 +17,7 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
   // BAM eq. 13's back-EMF term K_t²/R is joint damping (outside the force limit).
   a.damping_nm_s_per_rad = get(joint + "viscous_nm_s_per_rad") + kt * volts_to_torque;
   a.friction_nm = get(joint + "friction_nm");
-  a.armature_kg_m2 = get("bench.armature_kg_m2");
+  a.armature = get("bench.armature_kg_m2");
 }
 
 }  // namespace

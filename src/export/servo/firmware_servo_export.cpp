@@ -40,7 +40,7 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
   a.damping_nm_s_per_rad = get(joint + "viscous_nm_s_per_rad") + volts_to_torque * kt * ratio;
   a.friction_nm = get(joint + "friction_nm");
   a.reduction = ratio;
-  a.armature_kg_m2 = get(armature_parameter_name(spec.name));
+  a.armature = get(armature_parameter_name(spec));
 }
 
 }  // namespace

@@ -7,8 +7,8 @@ namespace {
 
 void fill(const ExportInput& input, std::size_t actuator, const ParameterReader& get,
           ActuatorExport& a) {
-  a.armature_kg_m2 = get(armature_parameter_name(input.model.actuators[actuator].name));
-  a.kv_nm_s_per_rad = detail::stiff_servo_kv_nm_s_per_rad(input, actuator, a.armature_kg_m2);
+  a.armature = get(armature_parameter_name(input.model.actuators[actuator]));
+  a.kv_nm_s_per_rad = detail::stiff_servo_kv_nm_s_per_rad(input, actuator, a.armature);
   a.kp_nm_per_rad = a.kv_nm_s_per_rad / input.dt_s;
   a.effort_nm =
       get(input.model.actuators[actuator].prismatic ? "ideal.force_max_n" : "ideal.torque_max_nm");

@@ -24,7 +24,7 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
   a.friction_nm = get(joint + "friction_nm");
   a.reduction = ratio;
   // The gear's small mass and the rotor's reflected inertia both act as joint-side inertia.
-  a.armature_kg_m2 = get(gear + "mass_kg_m2") + get(armature_parameter_name(spec.name));
+  a.armature = get(gear + "mass_kg_m2") + get(armature_parameter_name(spec));
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
   const std::string joint = "joint." + spec.name + ".";
   a.damping_nm_s_per_rad = get(joint + "viscous_nm_s_per_rad");
   a.friction_nm = get(joint + "friction_nm");
-  a.armature_kg_m2 = get(armature_parameter_name(spec.name));
+  a.armature = get(armature_parameter_name(spec));
 }
 
 }  // namespace

@@ -9,9 +9,10 @@
 namespace motoflex::detail {
 
 inline double stiff_servo_kv_nm_s_per_rad(const ExportInput& input, std::size_t actuator,
-                                          double armature_kg_m2) {
+                                          double armature) {
   constexpr double kStiffServoInertiaSteps = 5.0;
-  return kStiffServoInertiaSteps * (subtree_inertia_kg_m2(input.model, actuator) + armature_kg_m2) /
+  // On a slider both terms are masses (kg), and kv is in N·s/m.
+  return kStiffServoInertiaSteps * (subtree_inertia_kg_m2(input.model, actuator) + armature) /
          input.dt_s;
 }
 

@@ -10,8 +10,8 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
           ActuatorExport& a) {
   const ActuatorSpec& spec = input.model.actuators[actuator];
   const std::string joint = "joint." + spec.name + ".";
-  a.armature_kg_m2 = get(armature_parameter_name(spec.name));
-  a.kv_nm_s_per_rad = detail::stiff_servo_kv_nm_s_per_rad(input, actuator, a.armature_kg_m2);
+  a.armature = get(armature_parameter_name(spec));
+  a.kv_nm_s_per_rad = detail::stiff_servo_kv_nm_s_per_rad(input, actuator, a.armature);
   a.kp_nm_per_rad = a.kv_nm_s_per_rad * get(joint + "gain_per_s");
   a.effort_nm = get(joint + (spec.prismatic ? "force_max_n" : "torque_max_nm"));  // N on a slider
   // The law applies the joint's Coulomb + viscous friction beside the servo row.

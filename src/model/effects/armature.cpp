@@ -2,7 +2,8 @@
 
 namespace motoflex::detail {
 
-// The reflected rotor inertia of each joint (joint.<J>.armature_kg_m2, every law but bench),
+// The reflected rotor inertia of each hinge (joint.<J>.armature_kg_m2, every law but bench;
+// a slider's reflected mass joint.<J>.armature_kg is not matched by the pattern),
 // the rollout's joint-space inertia row.
 Effect armature_effect() {
   return {"armature",

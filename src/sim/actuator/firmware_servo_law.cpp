@@ -70,7 +70,7 @@ class FirmwareServoLaw final : public ServoLaw {
   }
   double damping_row_nm_s_per_rad() const override { return back_emf_damping_nm_s_per_rad_; }
   double current_a() const override { return current_a_; }
-  double armature_kg_m2() const override { return params_.armature_kg_m2; }
+  double armature() const override { return params_.armature_kg_m2; }
   bool needs_external_torque() const override { return external_; }
 
  private:
@@ -92,7 +92,7 @@ std::vector<std::string> firmware_law_parameter_names(const RobotModel& model,
   for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kFamily)) {
     out.push_back(std::move(name));
   }
-  out.push_back(armature_parameter_name(spec.name));
+  out.push_back(armature_parameter_name(spec));
   return out;
 }
 
@@ -123,7 +123,7 @@ std::unique_ptr<ServoLaw> create_firmware_law(const ServoLawSetup& setup) {
     throw ModelError(prefix + "gear_ratio must be positive, supply_v and current_limit_a >= 0");
   }
   p.friction = read_friction(setup.get, spec.name, FrictionTerms::kFamily);
-  p.armature_kg_m2 = read_armature_kg_m2(setup.get, spec.name);
+  p.armature_kg_m2 = read_armature(setup.get, spec);
   try {
     return std::make_unique<FirmwareServoLaw>(p, setup.dt_s);
   } catch (const std::invalid_argument& error) {

@@ -10,19 +10,19 @@ namespace {
 
 class IdealServoLaw final : public ServoLaw {
  public:
-  IdealServoLaw(IdealServoParams params, double dt_s, double armature_kg_m2)
-      : params_(params), dt_s_(dt_s), armature_kg_m2_(armature_kg_m2) {}
+  IdealServoLaw(IdealServoParams params, double dt_s, double armature)
+      : params_(params), dt_s_(dt_s), armature_(armature) {}
   ServoOutput step(const ServoInput& in) override {
     ServoOutput out;
     out.row = ideal_servo(params_, in.next_command_rad, in.angle_rad, dt_s_);
     return out;
   }
-  double armature_kg_m2() const override { return armature_kg_m2_; }
+  double armature() const override { return armature_; }  // kg·m², kg on a slider
 
  private:
   IdealServoParams params_;
   double dt_s_;
-  double armature_kg_m2_;
+  double armature_;
 };
 
 // One robot-wide limit per kind of joint: a torque for hinges, a force for sliders.
@@ -31,13 +31,13 @@ std::string limit_name(const RobotModel& model, std::size_t actuator) {
 }
 
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
-  return {limit_name(model, actuator), armature_parameter_name(model.actuators[actuator].name)};
+  return {limit_name(model, actuator), armature_parameter_name(model.actuators[actuator])};
 }
 
 std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   return std::make_unique<IdealServoLaw>(
       IdealServoParams{setup.get(limit_name(setup.model, setup.actuator))}, setup.dt_s,
-      read_armature_kg_m2(setup.get, setup.model.actuators[setup.actuator].name));
+      read_armature(setup.get, setup.model.actuators[setup.actuator]));
 }
 
 // TITAN-VIII's and the Nao's reference runs use 100 and 20 N·m; a stiff reference servo

@@ -57,7 +57,7 @@ class MotoflexServoLaw final : public ServoLaw {
   }
   double damping_row_nm_s_per_rad() const override { return params_.back_emf_damping_nm_s_per_rad; }
   double current_a() const override { return motor_.current_a(); }
-  double armature_kg_m2() const override { return params_.armature_kg_m2; }
+  double armature() const override { return params_.armature_kg_m2; }
 
  private:
   MotoflexServoParams params_;
@@ -70,7 +70,7 @@ class MotoflexServoLaw final : public ServoLaw {
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   const ActuatorSpec& spec = model.actuators[actuator];
   std::vector<std::string> out = motoflex_pipeline_parameter_names(spec);
-  out.push_back(armature_parameter_name(spec.name));
+  out.push_back(armature_parameter_name(spec));
   out.emplace_back("motor.R_drift_per_s");
   out.emplace_back("motor.supply_sag_ohm");
   return out;
@@ -94,7 +94,7 @@ MotoflexServoParams read_params(const ServoLawSetup& setup) {
   p.gear.mass_kg_m2 = get(gear + "mass_kg_m2");
   p.gear.viscous_nm_s_per_rad = get(gear + "viscous_nm_s_per_rad");
   p.friction = read_friction(get, spec.name, FrictionTerms::kMotorLoad);
-  p.armature_kg_m2 = read_armature_kg_m2(get, spec.name);
+  p.armature_kg_m2 = read_armature(get, spec);
   // Algorithm 1's B·ω_m reaches the joint as B·σ²·ω. Applied as an explicit torque it is
   // unstable at 1 ms on light links (B·σ²·dt/I > 2 at the Nao's ankles), so the rollout
   // integrates it implicitly: a zero-velocity motor row with unbounded force and

@@ -3,14 +3,19 @@
 //   τ = clip(kp·(θ_d − θ) − kd·θ̇, limits(θ̇))
 // with ±τ_max, and with a no-load speed ω₀ > 0 the motor's linear torque–speed curve
 // (clip_torque_speed_nm). Joint friction from BAM's family on τ, armature as joint inertia.
-// The torque is explicit: stable while kd·h/(I + J) < 2 and kp·h² /(I + J) small (the rollout
-// ends a diverging candidate as a model failure).
+// The kp term is explicit (stable while kp·h²/(I + J) is small; the rollout ends a diverging
+// candidate as a model failure); the kd term acts through the rollout's implicit damping row at
+// the end-of-step rate, stable for any kd·h/(I + J) (explicitly it diverged beyond 2: a stiff
+// leg gain on a light shank swinging in the air).
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
+#include "motoflex/sim/actuator/stance_gains.hpp"
 
 namespace motoflex {
 namespace {
@@ -37,9 +42,13 @@ class PdTorqueServoLaw final : public ServoLaw {
     out.torque_nm = clip_torque_speed_nm(pd_nm, in.rate_rad_s, params_.torque_max_nm,
                                          params_.no_load_speed_rad_s);
     out.row = joint_friction(friction_, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
+    // −kd·θ̇ at the end-of-step rate through the damping row: the offset cancels the start-of-step
+    // term inside torque_nm (when the torque is clipped, the row's change over the step is left).
+    out.damping_offset_nm = params_.kd_nm_s_per_rad * in.rate_rad_s;
     return out;
   }
-  double armature_kg_m2() const override { return armature_kg_m2_; }
+  double damping_row_nm_s_per_rad() const override { return params_.kd_nm_s_per_rad; }
+  double armature() const override { return armature_kg_m2_; }
   bool needs_external_torque() const override { return external_; }
 
  private:
@@ -48,6 +57,12 @@ class PdTorqueServoLaw final : public ServoLaw {
   double armature_kg_m2_;
   bool external_;
 };
+
+std::string short_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
 
 const char* const kLeaves[] = {"kp_nm_per_rad", "kd_nm_s_per_rad", "torque_max_nm",
                                "no_load_speed_rad_s"};
@@ -60,7 +75,7 @@ std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kFamily)) {
     out.push_back(std::move(name));
   }
-  out.push_back(armature_parameter_name(spec.name));
+  out.push_back(armature_parameter_name(spec));
   return out;
 }
 
@@ -77,8 +92,10 @@ std::vector<ParameterSpec> defaults(const RobotModel& model, std::size_t actuato
 
 // For a robot folder from a URDF (init-robot): the generic values, unless the URDF states the
 // joint's effort: then the torque limit is that effort and kp gives it at 0.1 rad of error (a
-// 20 N·m hobby leg joint gets 200 N·m/rad), so a robot stands under its own weight; the
-// velocity limit becomes the no-load speed of the torque-speed curve.
+// 20 N·m hobby leg joint gets 200 N·m/rad); the velocity limit becomes the no-load speed of the
+// torque-speed curve. A leg joint of a floating-base robot (a foot below it) takes kp and kd
+// from the robot's mass and leg geometry instead (stance_gains.hpp), and its torque limit too
+// when the URDF's effort is missing or a placeholder, so a fresh robot stands.
 std::vector<ParameterDefault> init_defaults(const RobotModel& model, std::size_t actuator,
                                             const JointHints& hints) {
   std::vector<ParameterDefault> out;
@@ -90,6 +107,18 @@ std::vector<ParameterDefault> init_defaults(const RobotModel& model, std::size_t
     const double effort = hints.effort;
     out[0] = {out[0].name, 10.0 * effort, 0.0, 1000.0 * effort, "URDF effort / 0.1 rad"};
     out[2] = {out[2].name, effort, 0.1 * effort, 10.0 * effort, "URDF effort"};
+  }
+  if (const auto stance = stance_gains(model, actuator)) {
+    const std::string rule = "stance: (M·g/n_feet)·d = " + short_text(stance->hold_torque_nm) +
+                             " N·m at d = " + short_text(stance->lever_m) + " m";
+    out[0] = {out[0].name, stance->kp_nm_per_rad, 0.0, 10.0 * stance->kp_nm_per_rad,
+              rule + ", / " + short_text(kStanceSag_rad) + " rad"};
+    out[1] = {out[1].name, stance->kd_nm_s_per_rad, 0.0, 10.0 * stance->kd_nm_s_per_rad,
+              "stance: critical damping of the weight share at d"};
+    if (!(std::isfinite(hints.effort) && hints.effort > 0.0)) {
+      out[2] = {out[2].name, stance->torque_max_nm, 0.1 * stance->torque_max_nm,
+                10.0 * stance->torque_max_nm, rule + ", x 4"};
+    }
   }
   if (std::isfinite(hints.velocity) && hints.velocity > 0.0) {
     out[3] = {out[3].name, hints.velocity, 0.0, 10.0 * hints.velocity, "URDF velocity"};
@@ -113,7 +142,7 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   }
   return std::make_unique<PdTorqueServoLaw>(
       p, read_friction(setup.get, spec.name, FrictionTerms::kFamily),
-      read_armature_kg_m2(setup.get, spec.name));
+      read_armature(setup.get, spec));
 }
 
 }  // namespace

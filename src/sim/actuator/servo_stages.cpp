@@ -71,14 +71,15 @@ std::vector<std::string> motoflex_pipeline_parameter_names(const ActuatorSpec& a
   return out;
 }
 
-std::string armature_parameter_name(const std::string& joint) {
-  return "joint." + joint + ".armature_kg_m2";
+std::string armature_parameter_name(const ActuatorSpec& actuator) {
+  return joint_parameter(actuator, "armature", joint_units(actuator).inertia);
 }
 
-double read_armature_kg_m2(const ParameterReader& get, const std::string& joint) {
-  const double armature_kg_m2 = get(armature_parameter_name(joint));
-  if (armature_kg_m2 < 0.0) throw ModelError(armature_parameter_name(joint) + " must be >= 0");
-  return armature_kg_m2;
+double read_armature(const ParameterReader& get, const ActuatorSpec& actuator) {
+  const std::string name = armature_parameter_name(actuator);
+  const double armature = get(name);
+  if (armature < 0.0) throw ModelError(name + " must be >= 0");
+  return armature;
 }
 
 namespace {

@@ -14,8 +14,8 @@ namespace {
 
 class VelocityServoLaw final : public ServoLaw {
  public:
-  VelocityServoLaw(VelocityServoParams params, FrictionParams friction, double armature_kg_m2)
-      : params_(params), friction_(friction), armature_kg_m2_(armature_kg_m2) {}
+  VelocityServoLaw(VelocityServoParams params, FrictionParams friction, double armature)
+      : params_(params), friction_(friction), armature_(armature) {}
   ServoOutput step(const ServoInput& in) override {
     ServoOutput out;
     out.row = velocity_servo(params_, in.command_rad, in.angle_rad);
@@ -24,7 +24,7 @@ class VelocityServoLaw final : public ServoLaw {
     out.friction_row = joint_friction(friction_, in.rate_rad_s);
     return out;
   }
-  double armature_kg_m2() const override { return armature_kg_m2_; }
+  double armature() const override { return armature_; }  // kg·m², kg on a slider
   // Without friction no row: robots whose joints have none step exactly as before.
   bool has_friction_row() const override {
     return friction_.coulomb_nm > 0.0 || friction_.viscous_nm_s_per_rad > 0.0 ||
@@ -34,7 +34,7 @@ class VelocityServoLaw final : public ServoLaw {
  private:
   VelocityServoParams params_;
   FrictionParams friction_;
-  double armature_kg_m2_;
+  double armature_;
 };
 
 std::string limit_name(const ActuatorSpec& a) {
@@ -47,7 +47,7 @@ std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   for (auto& friction : friction_parameter_names(a, FrictionTerms::kSpeedOnly)) {
     out.push_back(std::move(friction));
   }
-  out.push_back(armature_parameter_name(a.name));
+  out.push_back(armature_parameter_name(a));
   return out;
 }
 
@@ -55,8 +55,7 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   const ActuatorSpec& a = setup.model.actuators[setup.actuator];
   return std::make_unique<VelocityServoLaw>(
       VelocityServoParams{setup.get("joint." + a.name + ".gain_per_s"), setup.get(limit_name(a))},
-      read_friction(setup.get, a, FrictionTerms::kSpeedOnly),
-      read_armature_kg_m2(setup.get, a.name));
+      read_friction(setup.get, a, FrictionTerms::kSpeedOnly), read_armature(setup.get, a));
 }
 
 // Gains from TITAN-VIII (seed 000 Table I); the limit is the URDF's effort when it has one.

@@ -72,9 +72,10 @@ class ServoLaw {
   virtual double damping_row_nm_s_per_rad() const { return 0.0; }
   // The current the law draws from the robot's supply (A), for supply effects.
   virtual double current_a() const { return 0.0; }
-  // Reflected rotor inertia on the axis (kg·m², 0 = none), which the rollout adds as a
-  // joint-space inertia row (rollout.cpp, add_inertia_row). Asked once, when the rollout is built.
-  virtual double armature_kg_m2() const { return 0.0; }
+  // Reflected rotor inertia on the axis (kg·m² on a hinge, kg on a slider; 0 = none), which the
+  // rollout adds as a joint-space inertia row (rollout.cpp, add_inertia_row). Asked once, when
+  // the rollout is built.
+  virtual double armature() const { return 0.0; }
   // Whether step() reads ServoInput::external_torque_nm. Asked once, when the rollout is built.
   virtual bool needs_external_torque() const { return false; }
   // Whether the rollout must give the axis a second motor row for ServoOutput::friction_row.

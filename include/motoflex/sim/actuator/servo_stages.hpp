@@ -59,10 +59,11 @@ double clip_torque_speed_nm(double torque_nm, double velocity_rad_s, double torq
 // joint's motor-load friction terms (friction_family.hpp, FrictionTerms::kMotorLoad).
 std::vector<std::string> motoflex_pipeline_parameter_names(const ActuatorSpec& actuator);
 
-// joint.<J>.armature_kg_m2: the reflected rotor inertia J_rotor·σ² of a joint, which the rollout
-// adds as joint-space inertia (ServoLaw::armature_kg_m2). Throws ModelError when negative.
-std::string armature_parameter_name(const std::string& joint);
-double read_armature_kg_m2(const ParameterReader& get, const std::string& joint);
+// joint.<J>.armature_kg_m2 of a hinge (the reflected rotor inertia J_rotor·σ², kg·m²) or
+// joint.<J>.armature_kg of a slider (the reflected mass J_rotor·σ², σ in rad/m: kg), which the
+// rollout adds as joint-space inertia (ServoLaw::armature). Throws ModelError when negative.
+std::string armature_parameter_name(const ActuatorSpec& actuator);
+double read_armature(const ParameterReader& get, const ActuatorSpec& actuator);
 
 // Joint friction (a budget for a zero-velocity ODE motor, BAM's M1–M6) is in
 // friction_family.hpp.
