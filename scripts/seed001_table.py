@@ -29,6 +29,17 @@ ROWS = [
      "0.38 m lateral)"),
     ("walk_50_2", "ext_physical", "50 mm/s, 2 s: extended, physical semantics",
      "falls after the first step"),
+    # The original's own command files replayed (not bundled; `--commands`, README).
+    ("commands_200_1", "rigid_2011", "200 mm/s, original's command file: rigid model, box robot",
+     "200 mm/s (ODE only)"),
+    ("commands_200_1", "ext_2011", "200 mm/s, original's command file: extended, 2011 semantics",
+     "209 mm/s (original program rebuilt: 214 mm/s mean over 1-9 s, falls at 5.42 s; its "
+     "x87 dWorldStep build: 147 mm/s, falls at 9.2 s)"),
+    ("commands_50_2", "rigid_2011", "50 mm/s, original's command file: rigid model, box robot",
+     "walks on"),
+    ("commands_50_2", "ext_2011", "50 mm/s, original's command file: extended, 2011 semantics",
+     "falls after the first step (original program rebuilt: falls at 3.08 s sideways, 0.38 m "
+     "lateral, 17 mm/s)"),
 ]
 
 
@@ -50,7 +61,32 @@ def describe_run(run):
     if run.get("pitch_alternation") is not None:
         parts.append(f"alternation {run['pitch_alternation']:.2f}")
     parts.append(f"peak roll {degrees(run.get('max_abs_roll_rad')):.1f}°")
-    return ", ".join(parts)
+    if run.get("commands"):
+        parts.append(f"mean speed 1-9 s {run['mean_speed_mm_s']:.0f} mm/s")
+    text = ", ".join(parts)
+    if run.get("ensemble"):
+        text += "; " + describe_ensemble(run["ensemble"], run.get("commands"))
+    return text
+
+
+def spread(values, digits, unit):
+    known = sorted(v for v in values if v is not None)
+    if not known:
+        return "none"
+    median = known[len(known) // 2] if len(known) % 2 else \
+        0.5 * (known[len(known) // 2 - 1] + known[len(known) // 2])
+    return f"{median:.{digits}f} {unit} (median; {known[0]:.{digits}f}-{known[-1]:.{digits}f})"
+
+
+def describe_ensemble(ensemble, commands):
+    """The perturbed replays (same model, commands + 1e-7 rad noise): how much is chaos."""
+    n = ensemble["size"]
+    text = f"{n} replays with 1e-7 rad noise: {ensemble['fell']} of {n} fall"
+    if ensemble["fell"]:
+        text += ", at " + spread(ensemble["fall_s"], 2, "s")
+    key = "mean_speed_mm_s" if commands else "speed_mm_s"
+    label = "mean speed 1-9 s" if commands else "steady speed"
+    return text + f", {label} " + spread(ensemble[key], 0, "mm/s")
 
 
 def describe_zmp(variant, result):
@@ -70,7 +106,10 @@ def table_lines(data):
     lines = ["| row | paper | ours |", "|---|---|---|"]
     for walk, variant, label, paper in ROWS:
         run = data.get(walk, {}).get(variant)
-        ours = describe_run(run) if run else "not run"
+        if run and walk.startswith("commands_"):
+            run = dict(run, commands=True)
+        ours = ("pending: " + run["pending"]) if run and "pending" in run else \
+            describe_run(run) if run else "not run"
         lines.append(f"| {label} | {paper} | {ours} |")
     zmp = data.get("zmp_experiment")
     if zmp:

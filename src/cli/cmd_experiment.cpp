@@ -1,4 +1,4 @@
-// motoflex experiment seed001 --out DIR [--threads N] [--no-plots]
+// motoflex experiment seed001 --out DIR [--threads N] [--no-plots] [--commands NAME=FILE ...]
 // Runs a paper's experiments. seed001: Section 5 of seed 001 (the 200 mm/s walk's pitch
 // oscillation and speed, the 50 mm/s walk's fall, the modified reference ZMP) on each model
 // variant of scenarios/experiments/seed001.yaml. Writes DIR/seed001.json, torso series and
@@ -9,6 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "motoflex/core/error.hpp"
@@ -25,13 +26,22 @@ struct ExperimentArgs {
   std::string out;
   int threads = 1;
   bool no_plots = false;
+  std::vector<std::string> commands;  // NAME=FILE: the command file of walk NAME
+  Seed001Ensemble ensemble;
 };
 
 int run(const ExperimentArgs& args) {
   if (args.threads < 1) throw InputError("", 0, "--threads", "must be >= 1");
   const std::string path = find_experiment_config(args.name);
-  const Seed001Config config = load_seed001_config(path);
-  const Seed001Results results = run_seed001(config, args.threads);
+  Seed001Config config = load_seed001_config(path);
+  for (const std::string& item : args.commands) {
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == item.size()) {
+      throw InputError("", 0, "--commands", "expected NAME=FILE, found '" + item + "'");
+    }
+    set_walk_command_file(config, item.substr(0, eq), item.substr(eq + 1));
+  }
+  const Seed001Results results = run_seed001(config, args.threads, args.ensemble);
   write_seed001_report(config, results, args.out, !args.no_plots);
 
   nlohmann::ordered_json summary;
@@ -77,6 +87,16 @@ CommandRunner add_experiment_command(CLI::App& app) {
   sub->add_option("--threads", args->threads, "rollouts run at a time (results do not change)")
       ->check(thread_count());
   sub->add_flag("--no-plots", args->no_plots, "skip the PNG figures");
+  sub->add_option("--ensemble", args->ensemble.size,
+                  "also run every walk N times with its commands perturbed by a tiny noise "
+                  "(--ensemble-sigma): how much of a fall time or speed is chaos")
+      ->check(CLI::Range(0, 1000));
+  sub->add_option("--ensemble-sigma", args->ensemble.sigma_rad,
+                  "the perturbation's standard deviation in rad (default 1e-7)")
+      ->check(CLI::Range(0.0, 0.01));
+  sub->add_option("--commands", args->commands,
+                  "NAME=FILE: replay this command file (2011 MoToFlex format or a joint log) as "
+                  "the experiment's command-file walk NAME (e.g. commands_200_1)");
   return [args] { return run(*args); };
 }
 

@@ -17,7 +17,54 @@ void require_unique(std::set<std::string>& names, const YamlValue& field) {
   if (!names.insert(name).second) field.fail("'" + name + "' is listed twice");
 }
 
+Seed001Walk read_walk(const YamlValue& item) {
+  item.require_keys_within({"name", "scenario", "commands", "step_s", "steady_s", "figure"});
+  Seed001Walk walk;
+  walk.name = item.at("name").as_string();
+  walk.figure = item.get_string("figure", "");
+  if (walk.figure != "" && walk.figure != "pitch" && walk.figure != "roll") {
+    item.at("figure").fail("expected 'pitch' (Fig. 3) or 'roll' (Fig. 4)");
+  }
+  if (item.has("scenario") == item.has("commands")) {
+    item.at("name").fail("give either `scenario` (a planned walk) or `commands` (a command file)");
+  }
+  if (const auto scenario = item.find("scenario")) {
+    walk.scenario_path = scenario->resolve_path(scenario->as_string());
+    if (item.has("step_s") || item.has("steady_s")) {
+      item.at("scenario").fail("a planned walk takes step_s and steady_s from its plan");
+    }
+    return walk;
+  }
+  const YamlValue commands = item.at("commands");
+  walk.commands_path = commands.resolve_path(commands.as_string());
+  walk.step_s = item.at("step_s").as_double();
+  if (!(walk.step_s > 0.0 && walk.step_s <= 10.0)) item.at("step_s").fail("must be in (0, 10] s");
+  if (const auto steady = item.find("steady_s")) {
+    const std::vector<double> window = steady->as_double_list();
+    if (window.size() != 2 || !(window[0] >= 0.0 && window[1] > window[0] && window[1] <= 3600.0)) {
+      steady->fail("expected [from_s, to_s] with 0 <= from_s < to_s <= 3600");
+    }
+    walk.steady_start_s = window[0];
+    walk.steady_end_s = window[1];
+  }
+  return walk;
+}
+
 }  // namespace
+
+void set_walk_command_file(Seed001Config& config, const std::string& name,
+                           const std::string& path) {
+  for (Seed001Walk& walk : config.walks) {
+    if (walk.name != name) continue;
+    if (!walk.replays_commands()) {
+      throw InputError(config.path, 0, "--commands",
+                       "walk '" + name + "' is a planned walk, not a command file");
+    }
+    walk.commands_path = path;
+    return;
+  }
+  throw InputError(config.path, 0, "--commands", "no walk '" + name + "' in the experiment");
+}
 
 Seed001Config load_seed001_config(const std::string& path) {
   const YamlValue root = YamlValue::load_file(path);
@@ -26,15 +73,8 @@ Seed001Config load_seed001_config(const std::string& path) {
   config.path = path;
   std::set<std::string> walk_names;
   for (const YamlValue& item : root.at("walks").items()) {
-    item.require_keys_within({"name", "scenario", "figure"});
     require_unique(walk_names, item.at("name"));
-    Seed001Walk walk{item.at("name").as_string(),
-                     item.resolve_path(item.at("scenario").as_string()),
-                     item.get_string("figure", "")};
-    if (walk.figure != "" && walk.figure != "pitch" && walk.figure != "roll") {
-      item.at("figure").fail("expected 'pitch' (Fig. 3) or 'roll' (Fig. 4)");
-    }
-    config.walks.push_back(std::move(walk));
+    config.walks.push_back(read_walk(item));
   }
   if (config.walks.empty()) root.at("walks").fail("no walks listed");
   std::set<std::string> variant_names;
@@ -59,6 +99,11 @@ Seed001Config load_seed001_config(const std::string& path) {
     zmp->require_keys_within({"walk", "search", "variants"});
     config.zmp.walk = zmp->at("walk").as_string();
     if (!walk_names.count(config.zmp.walk)) zmp->at("walk").fail("not one of the walks");
+    for (const Seed001Walk& walk : config.walks) {
+      if (walk.name == config.zmp.walk && walk.replays_commands()) {
+        zmp->at("walk").fail("the ZMP experiment needs a planned walk, not a command file");
+      }
+    }
     for (const auto& [option, values] : zmp->at("search").entries()) {
       if (!NaoWalkParams{}.numeric(option)) {
         values.fail("not a numeric walk option (NaoWalkParams)");

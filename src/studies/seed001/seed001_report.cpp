@@ -1,5 +1,6 @@
 #include "motoflex/studies/seed001/seed001_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +22,45 @@ std::string series_name(const Seed001Run& run) {
 
 std::string zmp_series_name(const std::string& variant, std::size_t index) {
   return "series/zmp__" + variant + "__" + std::to_string(index) + ".csv";
+}
+
+double median(std::vector<double> values) {
+  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }),
+               values.end());
+  if (values.empty()) return std::nan("");
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The replicas one by one and their medians (a fall time's median over the replicas that fell).
+nlohmann::ordered_json ensemble_json(const std::vector<Seed001Replica>& replicas) {
+  nlohmann::ordered_json j;
+  std::vector<double> fall_s, speed, mean_speed, lateral;
+  int fell = 0;
+  for (const Seed001Replica& r : replicas) {
+    fell += r.fell ? 1 : 0;
+    fall_s.push_back(r.fall_s);
+    speed.push_back(r.speed_mm_s);
+    mean_speed.push_back(r.mean_speed_mm_s);
+    lateral.push_back(r.lateral_m);
+  }
+  const auto list = [](const std::vector<double>& values) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const double v : values) out.push_back(number(v));
+    return out;
+  };
+  j["size"] = replicas.size();
+  j["fell"] = fell;
+  j["fall_s_median"] = number(median(fall_s));
+  j["speed_mm_s_median"] = number(median(speed));
+  j["mean_speed_mm_s_median"] = number(median(mean_speed));
+  j["lateral_m_median"] = number(median(lateral));
+  j["fall_s"] = list(fall_s);
+  j["speed_mm_s"] = list(speed);
+  j["mean_speed_mm_s"] = list(mean_speed);
+  j["lateral_m"] = list(lateral);
+  return j;
 }
 
 nlohmann::ordered_json run_json(const Seed001Run& run, const std::string& series) {
@@ -51,6 +91,7 @@ nlohmann::ordered_json run_json(const Seed001Run& run, const std::string& series
   j["end_time_s"] = run.end_time_s;
   j["end_detail"] = run.end_detail;
   j["series"] = series;
+  if (!run.ensemble.empty()) j["ensemble"] = ensemble_json(run.ensemble);
   return j;
 }
 

@@ -4,9 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <filesystem>
 #include <limits>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/core/random_stream.hpp"
+#include "motoflex/core/text_hash.hpp"
 #include "motoflex/scenario/truth_file.hpp"
 #include "motoflex/sim/parallel_rollouts.hpp"
 
@@ -18,24 +21,39 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMeanSpeedFrom_s = 1.0;
 constexpr double kMeanSpeedTo_s = 9.0;
 
-// One rollout to run: the scenario owns model, parameters and commands.
+// One rollout to run: the scenario owns model, parameters and commands; a command file's walk
+// brings its step and steady window (a planned walk's come from its plan).
 struct Job {
   std::string walk;
   std::string variant;
   Scenario scenario;
+  const Seed001Walk* timing = nullptr;
 };
 
 Scenario load_variant_walk(const Seed001Variant& variant, const Seed001Walk& walk,
                            const std::map<std::string, double>& walk_options) {
   ScenarioOverrides overrides;
-  overrides.motion_scenario = walk.scenario_path;
-  overrides.walk_options = walk_options;
+  if (walk.replays_commands()) {
+    overrides.motion_log = walk.commands_path;
+  } else {
+    overrides.motion_scenario = walk.scenario_path;
+    overrides.walk_options = walk_options;
+  }
   if (!variant.params_path.empty()) overrides.parameters_json = variant.params_path;
   Scenario scenario = load_scenario_or_truth(variant.scenario_path, overrides);
-  if (!scenario.walk_plan) {
+  if (!walk.replays_commands() && !scenario.walk_plan) {
     throw InputError(walk.scenario_path, 0, "motion", "the seed-001 experiment needs a `walk`");
   }
   return scenario;
+}
+
+// Why a walk cannot run (its command file is missing), or "".
+std::string walk_pending(const Seed001Walk& walk) {
+  if (!walk.replays_commands()) return "";
+  std::error_code error;
+  if (std::filesystem::is_regular_file(walk.commands_path, error)) return "";
+  return "command file " + walk.commands_path + " not found (pass --commands " + walk.name +
+         "=FILE)";
 }
 
 std::vector<RolloutResult> run_jobs(const std::deque<Job>& jobs, int threads) {
@@ -48,12 +66,34 @@ std::vector<RolloutResult> run_jobs(const std::deque<Job>& jobs, int threads) {
 }
 
 Seed001Run evaluate(const Job& job, RolloutResult result) {
-  const NaoWalkPlan& plan = *job.scenario.walk_plan;
-  Seed001Run run = evaluate_walk_run(std::move(result), plan.steady_start_s, plan.steady_end_s,
-                                     0.5 * plan.params.step_duration_s);
+  Seed001Run run;
+  if (job.scenario.walk_plan) {
+    const NaoWalkPlan& plan = *job.scenario.walk_plan;
+    run = evaluate_walk_run(std::move(result), plan.steady_start_s, plan.steady_end_s,
+                            0.5 * plan.params.step_duration_s);
+  } else {
+    run = evaluate_walk_run(std::move(result), job.timing->steady_start_s, job.timing->steady_end_s,
+                            job.timing->step_s);
+  }
   run.walk = job.walk;
   run.variant = job.variant;
   return run;
+}
+
+// A copy of the job whose commands carry replica `k`'s noise (Seed001Ensemble).
+Job perturbed_copy(const Job& job, int k, double sigma_rad) {
+  Job copy = job;
+  const std::string tag = job.walk + "/" + job.variant;
+  RandomStream noise({static_cast<std::uint64_t>(k), std::stoull(hash_text(tag), nullptr, 16)});
+  const CommandTrajectory& c = job.scenario.commands;
+  std::vector<double> angles = c.angles_rad();
+  for (double& angle : angles) angle += sigma_rad * noise.normal();
+  copy.scenario.commands = CommandTrajectory(c.times_s(), std::move(angles), c.joints());
+  return copy;
+}
+
+Seed001Replica replica_of(const Seed001Run& run) {
+  return {run.fell, run.fall_s, run.speed_mm_s, run.mean_speed_mm_s, run.lateral_m};
 }
 
 const Seed001Walk& walk_named(const Seed001Config& config, const std::string& name) {
@@ -165,8 +205,9 @@ Seed001ZmpResult load_zmp_trials(const Seed001Config& config, const std::vector<
       trial.run.walk = walk.name;
       trial.run.variant = name;
       try {
-        jobs.push_back(
-            {walk.name, name, load_variant_walk(variant, walk, {{setting.option, setting.value}})});
+        jobs.push_back({walk.name, name,
+                        load_variant_walk(variant, walk, {{setting.option, setting.value}}),
+                        &walk});
         zmp_jobs.emplace_back(zmp.variants.size() - 1, k);
       } catch (const InputError& error) {
         // The same variant and walk loaded above and the option is a walk key (checked with
@@ -192,7 +233,8 @@ Seed001ZmpResult load_zmp_trials(const Seed001Config& config, const std::vector<
 
 }  // namespace
 
-Seed001Results run_seed001(const Seed001Config& config, int threads) {
+Seed001Results run_seed001(const Seed001Config& config, int threads,
+                           const Seed001Ensemble& ensemble) {
   const auto start = std::chrono::steady_clock::now();
   Seed001Results results;
   // Every rollout of the study is loaded first (bad input fails before any simulation), then all
@@ -200,18 +242,20 @@ Seed001Results run_seed001(const Seed001Config& config, int threads) {
   std::deque<Job> jobs;
   std::vector<int> job_of_run;  // per run: index into jobs, −1 for a pending variant
   for (const Seed001Walk& walk : config.walks) {
+    const std::string walk_missing = walk_pending(walk);
     for (const Seed001Variant& variant : config.variants) {
       Seed001Run run;
       run.walk = walk.name;
       run.variant = variant.name;
-      run.pending = variant.pending;
+      run.pending = variant.pending.empty() ? walk_missing : variant.pending;
+      const bool pending = !run.pending.empty();
       results.runs.push_back(std::move(run));
-      if (!variant.pending.empty()) {
+      if (pending) {
         job_of_run.push_back(-1);
         continue;
       }
       job_of_run.push_back(static_cast<int>(jobs.size()));
-      jobs.push_back({walk.name, variant.name, load_variant_walk(variant, walk, {})});
+      jobs.push_back({walk.name, variant.name, load_variant_walk(variant, walk, {}), &walk});
     }
   }
   // ZMP trials: (variant slot, setting) of each job, from first_zmp_job on.
@@ -221,11 +265,27 @@ Seed001Results run_seed001(const Seed001Config& config, int threads) {
     results.zmp = load_zmp_trials(config, results.runs, job_of_run, jobs, zmp_jobs);
   }
 
+  // Ensemble replicas of the walk runs: (run, job) of each, after the ZMP jobs.
+  std::vector<std::pair<std::size_t, std::size_t>> replica_jobs;
+  for (std::size_t r = 0; r < results.runs.size(); ++r) {
+    if (job_of_run[r] < 0) continue;
+    for (int k = 0; k < ensemble.size; ++k) {
+      replica_jobs.emplace_back(r, jobs.size());
+      jobs.push_back(
+          perturbed_copy(jobs[static_cast<std::size_t>(job_of_run[r])], k, ensemble.sigma_rad));
+    }
+  }
+
   std::vector<RolloutResult> rollouts = run_jobs(jobs, threads);
+  for (const auto& [r, j] : replica_jobs) {
+    results.runs[r].ensemble.push_back(replica_of(evaluate(jobs[j], std::move(rollouts[j]))));
+  }
   for (std::size_t r = 0; r < results.runs.size(); ++r) {
     if (job_of_run[r] < 0) continue;
     const std::size_t j = static_cast<std::size_t>(job_of_run[r]);
+    std::vector<Seed001Replica> replicas = std::move(results.runs[r].ensemble);
     results.runs[r] = evaluate(jobs[j], std::move(rollouts[j]));
+    results.runs[r].ensemble = std::move(replicas);
   }
   if (results.zmp) {
     for (std::size_t k = 0; k < zmp_jobs.size(); ++k) {

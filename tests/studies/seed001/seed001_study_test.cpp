@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "cli/cli_test_support.hpp"
@@ -128,6 +130,68 @@ TEST(Seed001Study, AShortStudyOnTheRigidModel) {
   EXPECT_FALSE(fs::exists(dir / "out" / "series" / "zmp__rigid__1.csv"));  // unplannable
 }
 
+// A command file in the 2011 program's format (written here): a crouch from the zero pose,
+// then held for 2 s (one row per 20 ms; LHipRoll and LAnkleRoll mirrored in the file).
+void write_crouch_commands(const fs::path& path) {
+  std::string text =
+      "LHipRoll;LHipPitch;LKneePitch;LAnklePitch;LAnkleRoll;RHipRoll;RHipPitch;RKneePitch;"
+      "RAnklePitch;RAnkleRoll\n";
+  for (int row = 0; row < 100; ++row) {
+    const double s = std::min(1.0, row / 25.0);  // the crouch over the first 0.5 s
+    const double hip = -0.4 * s, knee = 0.8 * s, ankle = -0.4 * s;
+    char line[256];
+    std::snprintf(line, sizeof line, "0;%.6f;%.6f;%.6f;0;0;%.6f;%.6f;%.6f;0\n", hip, knee, ankle,
+                  hip, knee, ankle);
+    text += line;
+  }
+  write_text(path, text);
+}
+
+TEST(Seed001Study, ACommandFileWalkReplaysTheFileWithItsOwnWindowAndAnEnsemble) {
+  const fs::path dir = fresh_dir("seed001_commands");
+  const std::string source = MOTOFLEX_SOURCE_DIR;
+  write_crouch_commands(dir / "crouch.csv");
+  write_text(dir / "study.yaml",
+             "walks:\n  - {name: crouch, commands: crouch.csv, step_s: 0.5, steady_s: [0.5, "
+             "1.5]}\n  - {name: absent, commands: nowhere.csv, step_s: 0.5}\n"
+             "variants:\n  - {name: rigid_2011, scenario: " +
+                 source + "/scenarios/experiments/seed001/rigid_2011.yaml}\n");
+  Seed001Config config = load_seed001_config((dir / "study.yaml").string());
+  ASSERT_EQ(config.walks.size(), 2u);
+  EXPECT_TRUE(config.walks[0].replays_commands());
+  EXPECT_EQ(config.walks[1].steady_start_s, 1.0);  // motoflex_2011.md §1's window by default
+  EXPECT_EQ(config.walks[1].steady_end_s, 9.0);
+  const Seed001Ensemble ensemble{3, 1e-7};
+  const Seed001Results one = run_seed001(config, 1, ensemble);
+  ASSERT_EQ(one.runs.size(), 2u);
+  const Seed001Run& crouch = one.runs[0];
+  ASSERT_TRUE(crouch.pending.empty()) << crouch.pending;
+  EXPECT_FALSE(crouch.fell);
+  EXPECT_EQ(crouch.steady_start_s, 0.5);
+  EXPECT_EQ(crouch.steady_end_s, 1.5);
+  // Crouching in place: the torso sinks, it does not travel (measured 0.0063 mm/s).
+  EXPECT_LT(std::abs(crouch.speed_mm_s), 2.0);
+  EXPECT_NE(one.runs[1].pending.find("--commands absent=FILE"), std::string::npos)
+      << one.runs[1].pending;
+  // The replicas: the same stand with 1e-7 rad of noise on every command, each its own draw;
+  // the exact solver and ideal servos are not chaotic here, so they agree to a hair (measured
+  // 0.00626-0.00628 mm/s, lateral drift of a few nm, different in each).
+  ASSERT_EQ(crouch.ensemble.size(), 3u);
+  EXPECT_NE(crouch.ensemble[0].lateral_m, crouch.ensemble[1].lateral_m);
+  for (const Seed001Replica& replica : crouch.ensemble) {
+    EXPECT_FALSE(replica.fell);
+    EXPECT_NEAR(replica.speed_mm_s, crouch.speed_mm_s, 1e-3);
+  }
+  const nlohmann::ordered_json a = seed001_json(config, one);
+  EXPECT_EQ(a.dump(), seed001_json(config, run_seed001(config, 2, ensemble)).dump());
+  EXPECT_EQ(a["crouch"]["rigid_2011"]["ensemble"]["size"], 3);
+  EXPECT_EQ(a["crouch"]["rigid_2011"]["ensemble"]["fell"], 0);
+  // --commands sets a listed command-file walk's file, and refuses anything else.
+  set_walk_command_file(config, "absent", (dir / "crouch.csv").string());
+  EXPECT_EQ(config.walks[1].commands_path, (dir / "crouch.csv").string());
+  EXPECT_THROW(set_walk_command_file(config, "nobody", "x.csv"), InputError);
+}
+
 TEST(Seed001Study, ConfigErrorsNameTheirField) {
   const fs::path dir = fresh_dir("seed001_config");
   write_study(dir);
@@ -145,6 +209,25 @@ TEST(Seed001Study, ConfigErrorsNameTheirField) {
              "  - {name: v, pending: x}\nzmp: {walk: w, search: {zmp_offset_y_m: [0]}, "
              "variants: [nobody]}\n");
   EXPECT_THROW(load_seed001_config((dir / "bad.yaml").string()), InputError);
+  // A walk is planned or replayed, not both; a command file needs its step; the ZMP experiment
+  // needs a planned walk.
+  write_text(dir / "bad.yaml",
+             "walks:\n  - {name: w, scenario: walk.yaml, commands: c.csv, step_s: 1}\n"
+             "variants:\n  - {name: v, pending: x}\n");
+  EXPECT_THROW(load_seed001_config((dir / "bad.yaml").string()), InputError);
+  write_text(dir / "bad.yaml",
+             "walks:\n  - {name: w, commands: c.csv}\nvariants:\n  - {name: v, pending: x}\n");
+  EXPECT_THROW(load_seed001_config((dir / "bad.yaml").string()), InputError);
+  write_text(dir / "bad.yaml",
+             "walks:\n  - {name: w, commands: c.csv, step_s: 1}\nvariants:\n"
+             "  - {name: v, pending: x}\nzmp: {walk: w, search: {zmp_offset_y_m: [0.02]}, "
+             "variants: [v]}\n");
+  try {
+    load_seed001_config((dir / "bad.yaml").string());
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(error.message().find("planned walk"), std::string::npos) << error.what();
+  }
   EXPECT_THROW(find_experiment_config("no_such_experiment"), InputError);
   EXPECT_NO_THROW(find_experiment_config("seed001"));
 }

@@ -11,6 +11,9 @@ namespace motoflex {
 //   walks:                             # each a scenario whose motion is a `walk`
 //     - {name: walk_200_1, scenario: ../walks/nao_walk_200_1.yaml, figure: pitch}
 //     - {name: walk_50_2, scenario: ../walks/nao_walk_50_2.yaml, figure: roll}
+//     # or a command file replayed as it is (a 2011 MoToFlex command file or a joint log):
+//     - {name: commands_200_1, commands: UncompensatedTarget200.csv, step_s: 0.5,
+//        steady_s: [1.0, 9.0], figure: pitch}
 //   variants:                          # each a scenario or truth file (robot, servo, physics,
 //     - {name: rigid, scenario: seed001/rigid.yaml}            #   parameters); its own motion,
 //     - {name: ext_physical, scenario: ../truth/nao_motoflex.yaml, params: fitted.json}
@@ -25,8 +28,15 @@ namespace motoflex {
 // Paths are relative to the file. A variant's walk is planned for the variant's robot.
 struct Seed001Walk {
   std::string name;
-  std::string scenario_path;
-  std::string figure;  // "pitch" (seed 001 Fig. 3), "roll" (Fig. 4) or "" (no figure)
+  std::string scenario_path;  // a walk of our planner (empty for a command file)
+  std::string commands_path;  // a command file replayed instead (empty for a planned walk)
+  std::string figure;         // "pitch" (seed 001 Fig. 3), "roll" (Fig. 4) or "" (no figure)
+  // A command file has no plan to take these from: one step (half a gait cycle) and the window
+  // of the steady speed (default: motoflex_2011.md §1's 1 s to 9 s).
+  double step_s = 0.0;
+  double steady_start_s = 1.0;
+  double steady_end_s = 9.0;
+  bool replays_commands() const { return !commands_path.empty(); }
 };
 
 struct Seed001Variant {
@@ -59,6 +69,10 @@ struct Seed001Config {
 // duplicate name, a figure other than pitch/roll, a ZMP option that is not a numeric walk key,
 // or a ZMP walk or variant that is not listed.
 Seed001Config load_seed001_config(const std::string& path);
+
+// Sets the command file of the command-file walk `name` (`motoflex experiment --commands
+// NAME=FILE`); InputError when no such walk is listed or it is a planned walk.
+void set_walk_command_file(Seed001Config& config, const std::string& name, const std::string& path);
 
 // The config file `motoflex experiment NAME` runs: NAME itself when it is an existing file,
 // else <data directory>/scenarios/experiments/NAME.yaml (InputError when neither exists).

@@ -13,6 +13,17 @@ namespace motoflex {
 // What one walk did under one model variant: seed 001 §5's numbers (definitions in the README,
 // "Seed 001's experiments") and the torso series behind them. NaN marks a number that does not
 // exist for this run (no fall, a steady part too short to measure).
+// One replica of a run: the same walk and model with every commanded angle perturbed by a
+// tiny seeded noise (Seed001Ensemble). A walk whose outcome moves with such a perturbation is
+// chaotic there, and its single run is one draw of a distribution.
+struct Seed001Replica {
+  bool fell = false;
+  double fall_s = 0.0;  // NaN when it did not fall
+  double speed_mm_s = 0.0;
+  double mean_speed_mm_s = 0.0;
+  double lateral_m = 0.0;
+};
+
 struct Seed001Run {
   std::string walk;
   std::string variant;
@@ -36,10 +47,18 @@ struct Seed001Run {
   std::optional<FallDirection> fall_direction;
   double fall_roll_rad = 0.0;  // torso tilt at the last frame before the fall
   double fall_pitch_rad = 0.0;
-  double pitch_alternation = 0.0;  // alternation_ratio of the per-step torso pitch ranges
-  double pitch_range_rad = 0.0;    // mean per-step torso pitch range (steady part)
-  double max_abs_roll_rad = 0.0;   // largest |torso roll| before the end
-  RolloutResult result;            // frames, torso position, IMU roll/pitch
+  double pitch_alternation = 0.0;        // alternation_ratio of the per-step torso pitch ranges
+  double pitch_range_rad = 0.0;          // mean per-step torso pitch range (steady part)
+  double max_abs_roll_rad = 0.0;         // largest |torso roll| before the end
+  RolloutResult result;                  // frames, torso position, IMU roll/pitch
+  std::vector<Seed001Replica> ensemble;  // empty unless an ensemble was asked for
+};
+
+// Replicas of every walk run (not of the ZMP trials): `size` runs each, replica k with its
+// commands plus N(0, sigma_rad²) noise drawn from the stream {k, hash of walk and variant}.
+struct Seed001Ensemble {
+  int size = 0;
+  double sigma_rad = 1e-7;
 };
 
 // One trial of the ZMP experiment: the walk with one setting under one variant. A value the
@@ -69,7 +88,8 @@ struct Seed001Results {
 // search, `threads` rollouts at a time (results do not depend on it). Throws InputError for a
 // bad scenario, a walk scenario whose motion is not a `walk`, or a ZMP option that is not a
 // numeric walk key.
-Seed001Results run_seed001(const Seed001Config& config, int threads);
+Seed001Results run_seed001(const Seed001Config& config, int threads,
+                           const Seed001Ensemble& ensemble = {});
 
 // The metrics of a finished rollout of a planned walk (steady window and step from the plan).
 Seed001Run evaluate_walk_run(RolloutResult result, double steady_start_s, double steady_end_s,
