@@ -66,6 +66,8 @@ nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
           {"steps", c.steps},
           {"mujoco_steps_per_s", c.mujoco_steps_per_s},
           {"motoflex_steps_per_s", c.motoflex_steps_per_s},
+          {"motoflex_quick_steps_per_s", c.motoflex_quick_steps_per_s},
+          {"rms_deg_quick", c.rms_deg_quick},
           {"motoflex_end", c.motoflex_end},
           {"geoms", c.geoms},
           {"visual_geoms", c.visual_geoms}};

@@ -56,11 +56,12 @@ struct Replay {
 };
 
 Replay replay_in_motoflex(const ExportInput& input, const CommandSamples& samples,
-                          const std::vector<double>& first, const MujocoCheckOptions& options) {
+                          const std::vector<double>& first, const MujocoCheckOptions& options,
+                          StepSolver solver) {
   const std::size_t n = input.model.actuators.size();
   RolloutOptions rollout_options;
   rollout_options.dt_s = input.dt_s;
-  rollout_options.solver = StepSolver::kStep;
+  rollout_options.solver = solver;
   rollout_options.servo = input.servo;
   rollout_options.gear_substeps = options.gear_substeps;
   rollout_options.hold_torso = options.hold_torso;
@@ -144,7 +145,8 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
   const CommandSamples samples = sample_commands(commands, input.dt_s, options.settle_s);
   std::vector<double> first(n);
   for (std::size_t j = 0; j < n; ++j) first[j] = commands.angle_rad(0, j);
-  const Replay ode = replay_in_motoflex(input, samples, first, options);
+  const Replay ode = replay_in_motoflex(input, samples, first, options, StepSolver::kStep);
+  const Replay quick = replay_in_motoflex(input, samples, first, options, StepSolver::kQuickStep);
   const Replay mujoco = replay_in_mujoco(input, samples, first, options);
 
   MujocoComparison out;
@@ -170,6 +172,15 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
     out.rms_deg = std::sqrt(total / (ode.steps * n));
   }
   out.motoflex_steps_per_s = ode.seconds > 0.0 ? ode.steps / ode.seconds : 0.0;
+  out.motoflex_quick_steps_per_s = quick.seconds > 0.0 ? quick.steps / quick.seconds : 0.0;
+  double quick_total = 0.0;
+  for (std::size_t k = 0; k < quick.steps; ++k) {
+    for (std::size_t j = 0; j < n; ++j) {
+      const double e = (mujoco.angles_rad[k * n + j] - quick.angles_rad[k * n + j]) * kDeg;
+      quick_total += e * e;
+    }
+  }
+  if (quick.steps > 0) out.rms_deg_quick = std::sqrt(quick_total / (quick.steps * n));
   out.mujoco_steps_per_s = mujoco.seconds > 0.0 ? mujoco.steps / mujoco.seconds : 0.0;
   return out;
 }

@@ -24,6 +24,10 @@ struct MujocoComparison {
   std::size_t steps = 0;                  // physics steps compared (settling excluded)
   double mujoco_steps_per_s = 0.0;        // wall-clock rate of mj_step (one thread)
   double motoflex_steps_per_s = 0.0;      // wall-clock rate of Rollout::step (one thread)
+  // The same replay with dWorldQuickStep (reproducible: its own seed per rollout): its rate and
+  // its RMS against MuJoCo, so a user sees both ODE solvers beside MuJoCo's.
+  double motoflex_quick_steps_per_s = 0.0;
+  double rms_deg_quick = 0.0;
   std::string motoflex_end;               // how the motoflex rollout ended ("completed", ...)
   std::string mujoco_version;
   std::size_t geoms = 0;         // geoms of the exported model (collision, visual, floor)

@@ -1,0 +1,219 @@
+#!/usr/bin/env python3
+"""Fit speed on the paper's real problem (issue 20), measured in one run on this machine.
+
+1. Physics steps/s per core of the Nao's full MoToFlex pipeline (100 gear sub-steps, 2 flexible
+   sub-bodies per thigh and tibia), exact (dWorldStep) and quick (dWorldQuickStep, seeded per
+   rollout), `motoflex bench`, REPEATS interleaved runs, medians.
+2. motoflex against MuJoCo 2.2.2 on the same exported Nao and motion (the Nao walking on the
+   ground with the full servo, the validation walk, 1 ms steps), `motoflex export --check-mujoco`:
+   steps/s of both ODE solvers and of MuJoCo, ratios taken within each run.
+3. The `nao_paper` fit (scenarios/fit/nao_paper.yaml: the paper's 22 genes as 19 free
+   parameters, the five 10 s training logs, from the nominal defaults) on 2 threads: evaluations
+   and wall time until the best fitness first reaches (1 + TOLERANCE)·F(truth), F(truth) being
+   the fitness at the truth's values of the free parameters (one evaluation, the held ones as the
+   config holds them), read from the run's generations.csv; the final best, the parameters it
+   recovers within 5 % of the truth and the ones the data do not identify (summary.json's
+   sensitivities and, with the LM polish, its intervals).
+4. The share of physics frames racing saved in that fit (summary.json's early_termination).
+
+    scripts/bench_fit_speed.py                       # the whole benchmark (the fit: its budget)
+    scripts/bench_fit_speed.py --fit-seconds 600     # a shorter fit
+    scripts/bench_fit_speed.py --skip-fit            # parts 1 and 2 only
+
+Writes OUT/fit_speed.md and OUT/fit_speed.json (default benchmarks/fit_speed/).
+"""
+
+import argparse
+import fnmatch
+import json
+import os
+import statistics
+import subprocess
+import sys
+from pathlib import Path
+
+import yaml  # python3-yaml (scripts/setup)
+
+from bench_strategies import derived_config, first_reach, read_generations, truth_point, \
+    write_config
+from report_files import write_report
+
+ROOT = Path(__file__).resolve().parent.parent
+FIT = ROOT / "scenarios" / "fit" / "nao_paper.yaml"
+TRUTH = ROOT / "scenarios" / "truth" / "nao_motoflex.yaml"
+PIPELINE = ["--robot", "nao", "--servo", "motoflex", "--flex", "2", "--substeps", "100"]
+
+
+def run_json(command):
+    out = subprocess.run([str(c) for c in command], check=True, capture_output=True,
+                         text=True).stdout
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def steps_per_core(binary, repeats, seconds):
+    rates = {"step": [], "quick": []}
+    for _ in range(repeats):
+        for solver in rates:
+            line = run_json([binary, "bench", *PIPELINE, "--seconds", seconds, "--solver",
+                             solver])
+            rates[solver].append(line["steps_per_s"])
+    return {solver: statistics.median(values) for solver, values in rates.items()}
+
+
+def against_mujoco(binary, repeats, out):
+    truth = json.loads((ROOT / "reference_data/nao/truth/validation/walk_050mm_1s.json")
+                       .read_text())["parameters"]
+    truth["sensor.noise_rad"] = 0.0  # MuJoCo's angles are exact: compare exact encoders
+    truth["sensor.resolution_bits"] = 0
+    params = out / "walk_truth.json"
+    params.write_text(json.dumps(truth))
+    runs = [run_json([binary, "export", params, "--robot", ROOT / "scenarios/robots/nao",
+                      "--servo", "motoflex", "--format", "mjcf", "--out", out / "nao.xml",
+                      "--check-mujoco", ROOT / "reference_data/nao/validation/walk_050mm_1s.csv",
+                      "--settle", "0.5"]) for _ in range(repeats)]
+    return {
+        "model": "Nao walking on the ground, full MoToFlex servo (validation walk, 10 s)",
+        "mujoco_steps_per_s": statistics.median(r["mujoco_steps_per_s"] for r in runs),
+        "exact_steps_per_s": statistics.median(r["motoflex_steps_per_s"] for r in runs),
+        "quick_steps_per_s": statistics.median(r["motoflex_quick_steps_per_s"] for r in runs),
+        "exact_over_mujoco": statistics.median(
+            r["motoflex_steps_per_s"] / r["mujoco_steps_per_s"] for r in runs),
+        "quick_over_mujoco": statistics.median(
+            r["motoflex_quick_steps_per_s"] / r["mujoco_steps_per_s"] for r in runs),
+        "rms_deg_exact_vs_mujoco": runs[0]["rms_deg"],
+        "rms_deg_quick_vs_mujoco": runs[0]["rms_deg_quick"],
+    }
+
+
+def truth_fitness(binary, out, threads):
+    """F at the truth's values of nao_paper's free parameters: one evaluation (the free set is the
+    ideal servo's torque limit, which the motoflex law never reads; the truth is `fixed:`)."""
+    point = truth_point(FIT, TRUTH)
+    config = derived_config(FIT, {"kind": "nlopt", "algorithm": "sbplx"}, 1, threads, 1)
+    config["free"] = {"ideal.torque_max_nm": {"lower": 1.0, "upper": 100.0, "start": 20.0}}
+    config["fixed"] = {**(config.get("fixed") or {}), **point}
+    path = out / "truth_fitness.yaml"
+    write_config(path, config)
+    run_dir = out / "runs" / "truth_fitness"
+    subprocess.run([binary, "fit", path, "--out", run_dir], check=True, stdout=subprocess.DEVNULL)
+    summary = json.loads((run_dir / "summary.json").read_text())
+    return summary["best_fitness"], point
+
+
+def recovered(summary, point, within=0.05):
+    """Per free parameter in the truth: fitted, truth, relative error, identified or not."""
+    fitted = summary.get("parameters", {})
+    sensitivity = summary.get("sensitivity", {})
+    unidentified = set(summary.get("uncertainty", {}).get("unidentified", []))
+    rows = []
+    for name, truth in sorted(point.items()):
+        value = fitted.get(name)
+        if value is None:
+            continue
+        error = abs(value - truth) / abs(truth) if truth != 0 else abs(value)
+        rows.append({"name": name, "fitted": value, "truth": truth, "relative_error": error,
+                     "within": error <= within, "sensitivity": sensitivity.get(name),
+                     "unidentified": name in unidentified})
+    return rows
+
+
+def fit_paper(binary, out, threads, seconds, tolerance):
+    f_truth, point = truth_fitness(binary, out, threads)
+    target = (1.0 + tolerance) * f_truth
+    config = yaml.safe_load(FIT.read_text())
+    for key in ("scenario", "data", "validation"):
+        config[key] = str((FIT.parent / config[key]).resolve())
+    config.pop("out", None)
+    config["threads"] = threads
+    if seconds:
+        config["budget"] = dict(config.get("budget", {}), seconds=seconds)
+    path = out / "nao_paper.yaml"
+    write_config(path, config)
+    run_dir = out / "runs" / "nao_paper"
+    subprocess.run([binary, "fit", path, "--out", run_dir], check=True, stdout=subprocess.DEVNULL)
+    summary = json.loads((run_dir / "summary.json").read_text())
+    rows = read_generations(run_dir)
+    reach = first_reach(rows, target)
+    saved = summary.get("early_termination", {})
+    return {
+        "truth_fitness": f_truth, "target": target, "tolerance": tolerance,
+        "reached": reach is not None,
+        "evaluations_to_target": reach["evaluations"] if reach else None,
+        "seconds_to_target": reach["seconds"] if reach else None,
+        "best_fitness": summary["best_fitness"], "evaluations": summary["evaluations"],
+        "seconds": summary.get("seconds"), "stop_reason": summary.get("stop_reason"),
+        "converged": summary.get("converged"), "threads": threads,
+        "racing": saved,
+        "parameters": recovered(summary, point),
+        "validation_rms_deg": summary.get("validation", {}).get("rms_deg", {}).get("overall"),
+    }
+
+
+def racing_share(early):
+    """Frames saved by racing as a share of the frames a full evaluation would have run."""
+    saved, run = early.get("frames_saved", 0), early.get("frames_simulated", 0)
+    return 100.0 * saved / (saved + run) if saved + run else 0.0
+
+
+def report_lines(result):
+    speed, mujoco = result["steps_per_core"], result["mujoco"]
+    lines = ["| measure | value |", "|---|---|",
+             f"| Nao full pipeline, steps/s per core, exact | {speed['step']:.0f} |",
+             f"| Nao full pipeline, steps/s per core, quick | {speed['quick']:.0f} |",
+             f"| {mujoco['model']}: MuJoCo steps/s | {mujoco['mujoco_steps_per_s']:.0f} |",
+             f"| same: motoflex / MuJoCo, exact | {mujoco['exact_over_mujoco']:.2f} |",
+             f"| same: motoflex / MuJoCo, quick | {mujoco['quick_over_mujoco']:.2f} |"]
+    fit = result.get("fit")
+    if fit:
+        reach = (f"{fit['evaluations_to_target']} evaluations, {fit['seconds_to_target']:.0f} s"
+                 if fit["reached"] else f"not reached in {fit['evaluations']} evaluations, "
+                 f"{fit['seconds']:.0f} s")
+        lines += [
+            f"| nao_paper: F(truth), target ×{1 + fit['tolerance']:g} | "
+            f"{fit['truth_fitness']:.4g}, {fit['target']:.4g} |",
+            f"| nao_paper on {fit['threads']} threads: to the target | {reach} |",
+            f"| nao_paper: final best, evaluations, stop | {fit['best_fitness']:.4g}, "
+            f"{fit['evaluations']}, {fit['stop_reason']} |",
+            f"| nao_paper: frames saved by racing | "
+            f"{racing_share(fit['racing']):.1f} % |",
+        ]
+        within = [p["name"] for p in fit["parameters"] if p["within"]]
+        lines.append(f"| nao_paper: within 5 % of the truth ({len(within)} of "
+                     f"{len(fit['parameters'])}) | {', '.join(within) or 'none'} |")
+        lines += ["", "| parameter | truth | fitted | error | sensitivity | identified |",
+                  "|---|---|---|---|---|---|"]
+        for p in fit["parameters"]:
+            sens = "—" if p["sensitivity"] is None else f"{p['sensitivity']:.3g}"
+            lines.append(f"| {p['name']} | {p['truth']:.4g} | {p['fitted']:.4g} | "
+                         f"{100 * p['relative_error']:.1f} % | {sens} | "
+                         f"{'no' if p['unidentified'] else 'yes'} |")
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--binary", default=str(ROOT / "build" / "motoflex"))
+    parser.add_argument("--out", default=str(ROOT / "benchmarks" / "fit_speed"))
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--seconds", default="5", help="simulated seconds per bench rollout")
+    parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--fit-seconds", type=float, default=0.0,
+                        help="the fit's time budget (default: nao_paper.yaml's)")
+    parser.add_argument("--tolerance", type=float, default=0.05)
+    parser.add_argument("--skip-fit", action="store_true")
+    args = parser.parse_args()
+    out = Path(args.out)
+    (out / "runs").mkdir(parents=True, exist_ok=True)
+    result = {"steps_per_core": steps_per_core(args.binary, args.repeats, args.seconds)}
+    print(f"steps/s per core: {result['steps_per_core']}", flush=True)
+    result["mujoco"] = against_mujoco(args.binary, args.repeats, out / "runs")
+    print(f"against MuJoCo: {result['mujoco']}", flush=True)
+    if not args.skip_fit:
+        result["fit"] = fit_paper(args.binary, out, args.threads, args.fit_seconds,
+                                  args.tolerance)
+    lines = report_lines(result)
+    write_report(str(out), "fit_speed", lines, result)
+
+
+if __name__ == "__main__":
+    main()
