@@ -1,5 +1,6 @@
 #include "motoflex/effects/effect_loop.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -127,13 +128,26 @@ void rank_iteration(const Evaluated& current, const LoopOptions& options, std::s
 }
 
 // The ranking orders; the refit on validation logs decides. (ΔBIC over N_eff is a conservative
-// screen: on a smooth real residual it can leave no effect "supported".)
+// screen: on a smooth real residual it can leave no effect "supported".) Effects that passed the
+// validation test in the previous iteration but were not added (`retained`) are refit again on
+// top of the new model, whatever their rank now: once one effect is in, the linearised ranking
+// around the new fit can credit a second one with nothing (the first one's parameters re-tuned
+// take up its probe) although the two together fit better, as a current limit and
+// load-dependent friction do on the XL330 bench.
 std::vector<const EffectScore*> refit_candidates(const EffectRanking& ranking,
-                                                 const LoopOptions& options) {
+                                                 const LoopOptions& options,
+                                                 const std::vector<std::string>& retained) {
   std::vector<const EffectScore*> candidates;
   for (const auto& score : ranking.scores) {
     if (score.scored() && score.explained > kMinExplained &&
         candidates.size() < options.candidates) {
+      candidates.push_back(&score);
+    }
+  }
+  for (const auto& score : ranking.scores) {
+    const bool listed = std::find(candidates.begin(), candidates.end(), &score) != candidates.end();
+    if (score.scored() && !listed &&
+        std::find(retained.begin(), retained.end(), score.effect) != retained.end()) {
       candidates.push_back(&score);
     }
   }
@@ -218,7 +232,8 @@ std::vector<DiscoveredTerm> discover_and_refit(std::size_t iteration, const fs::
 // One iteration: rank, refit the top candidates, keep the best significant one. Returns false
 // when nothing was added (the loop stops).
 bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions& options,
-                   Evaluated& current, std::vector<std::string>& model, LoopResult& result) {
+                   Evaluated& current, std::vector<std::string>& model,
+                   std::vector<std::string>& retained, LoopResult& result) {
   LoopIteration step;
   step.model_run_dir = current.fit.config.out_dir;
   step.train_rms_before_deg = current.train.rms_deg;
@@ -228,7 +243,8 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
   rank_iteration(current, options, iteration, step, result);
   std::optional<std::size_t> winner;  // index into refits
   std::vector<Evaluated> refits;
-  const std::vector<const EffectScore*> candidates = refit_candidates(step.ranking, options);
+  const std::vector<const EffectScore*> candidates =
+      refit_candidates(step.ranking, options, retained);
   refits.reserve(candidates.size());
   for (const EffectScore* candidate : candidates) {
     const std::string dir = iteration_dir(out, iteration, candidate->effect);
@@ -256,6 +272,12 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
   }
   step.added_effect = step.refits[*winner].effect;
   model.push_back(step.added_effect);
+  retained.clear();
+  for (const LoopRefit& refit : step.refits) {
+    if (refit.significant && refit.effect != step.added_effect && refit.effect != kDiscovered) {
+      retained.push_back(refit.effect);
+    }
+  }
   Evaluated& best = refits[*winner];
   record_errors_after(best, step);
   if (step.added_effect == kDiscovered) {
@@ -300,8 +322,9 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides, 
   result.base_model = modelled_effects(current.fit.config);
   std::vector<std::string> model = result.base_model;
   account(result, current.fit);
+  std::vector<std::string> retained;  // significant last time, not added: refit again
   for (std::size_t iteration = 1; iteration <= options.max_iterations; ++iteration) {
-    if (!run_iteration(iteration, out, options, current, model, result)) break;
+    if (!run_iteration(iteration, out, options, current, model, retained, result)) break;
   }
   result.final_model = model;
   result.final_run_dir = current.fit.config.out_dir;

@@ -29,6 +29,7 @@ const std::vector<Effect>& effect_library() {
       detail::load_stribeck_friction_effect(),
       detail::quadratic_load_friction_effect(),
       detail::armature_effect(),
+      detail::current_limit_effect(),
   };
   return library;
 }

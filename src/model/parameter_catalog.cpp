@@ -67,6 +67,9 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
     add(joint + "load_saturation_nm", truth.load_saturation_nm, 0.0, 2.0);
     add(joint + "load_saturation_scale_nm", truth.load_saturation_scale_nm, 0.01, 5.0);
   }
+  // Appended: a driver's current limit (the bench's voltage servo; the effect current_limit):
+  // 1e3 A never binds on a servo.
+  add("motor.current_limit_a", 1.0e3, 0.05, 1.0e3);
   return specs;
 }
 

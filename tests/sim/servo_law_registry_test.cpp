@@ -90,6 +90,12 @@ TEST(ServoLawRegistryTest, FrictionAndArmatureEffectsApplyWhereTheLawsReadThem) 
   // The velocity law's torque is its row's force, unknown before the step: no load friction.
   EXPECT_FALSE(applies("load_friction", "velocity"));
   EXPECT_TRUE(applies("load_friction", "dynamixel"));
+  // The driver's current limit: the bench's voltage servo reads motor.current_limit_a (the
+  // firmware laws have their own servo.<scope>.current_limit_a, set from the servo's registers).
+  EXPECT_TRUE(applies("current_limit", "bench"));
+  for (const char* law : {"velocity", "pd_torque", "motoflex", "ideal"}) {
+    EXPECT_FALSE(applies("current_limit", law)) << law;
+  }
 }
 
 }  // namespace

@@ -58,6 +58,31 @@ TEST(ServoStagesTest, BenchServoLinearRegionAndBackEmf) {
               kt * params.supply_v * duty / r - kt * kt * 2.0 / r, 1e-15);
 }
 
+TEST(ServoStagesTest, BenchServoCurrentLimitCapsTheTorqueWhateverTheDuty) {
+  BenchServoParams params;
+  params.torque_constant_nm_per_a = 0.39;
+  params.resistance_ohm = 3.6;
+  params.kp = 800.0;
+  const double kt = params.torque_constant_nm_per_a;
+  // Saturated duty at stall: I = 7.4 V / 3.6 Ω = 2.06 A, above a 1.4 A limit: τ = K_t·1.4 A.
+  const double unlimited_nm = bench_servo_torque_nm(params, 1.0, 0.0, 0.0, true);
+  EXPECT_NEAR(unlimited_nm, kt * params.supply_v / params.resistance_ohm, 1e-15);
+  params.current_limit_a = 1.4;
+  EXPECT_DOUBLE_EQ(bench_servo_torque_nm(params, 1.0, 0.0, 0.0, true), kt * 1.4);
+  EXPECT_DOUBLE_EQ(bench_servo_torque_nm(params, -1.0, 0.0, 0.0, true), -kt * 1.4);
+  // Below the limit (a small error, or the back-EMF of a fast motion cutting the current) the
+  // torque is the unlimited law's, bit for bit: 0.05 rad → I = 0.24 A; 1 rad at 20 rad/s →
+  // (7.4 − 7.8) V / 3.6 Ω = −0.11 A.
+  BenchServoParams unlimited = params;
+  unlimited.current_limit_a = 1.0e3;
+  EXPECT_EQ(bench_servo_torque_nm(params, 0.05, 0.0, 0.0, true),
+            bench_servo_torque_nm(unlimited, 0.05, 0.0, 0.0, true));
+  EXPECT_EQ(bench_servo_torque_nm(params, 1.0, 0.0, 20.0, true),
+            bench_servo_torque_nm(unlimited, 1.0, 0.0, 20.0, true));
+  // Braking current is limited too: driven backwards hard at full reverse duty.
+  EXPECT_DOUBLE_EQ(bench_servo_torque_nm(params, -1.0, 0.0, 10.0, true), -kt * 1.4);
+}
+
 TEST(ServoStagesTest, BenchServoWithTorqueDisabledIsFree) {
   const BenchServoParams params;
   EXPECT_EQ(bench_servo_torque_nm(params, 3.0, 0.0, 5.0, false), 0.0);

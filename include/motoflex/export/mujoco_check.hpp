@@ -28,7 +28,7 @@ struct MujocoComparison {
   // its RMS against MuJoCo, so a user sees both ODE solvers beside MuJoCo's.
   double motoflex_quick_steps_per_s = 0.0;
   double rms_deg_quick = 0.0;
-  std::string motoflex_end;               // how the motoflex rollout ended ("completed", ...)
+  std::string motoflex_end;  // how the motoflex rollout ended ("completed", ...)
   std::string mujoco_version;
   std::size_t geoms = 0;         // geoms of the exported model (collision, visual, floor)
   std::size_t visual_geoms = 0;  // of those, the visual ones (group 1: what a viewer shows)

@@ -42,5 +42,6 @@ Effect directional_load_friction_effect();
 Effect load_stribeck_friction_effect();
 Effect quadratic_load_friction_effect();
 Effect armature_effect();
+Effect current_limit_effect();
 
 }  // namespace motoflex::detail

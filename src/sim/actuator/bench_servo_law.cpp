@@ -57,6 +57,7 @@ std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
     out.push_back(std::move(name));
   }
   out.emplace_back("motor.R_drift_per_s");
+  out.emplace_back("motor.current_limit_a");
   return out;
 }
 
@@ -70,6 +71,8 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   bench.torque_constant_nm_per_a = get("bench.Kt_nm_per_a");
   bench.resistance_ohm = get("bench.R_ohm");
   bench.torque_off_s = get("bench.torque_off_s");
+  bench.current_limit_a = get("motor.current_limit_a");
+  if (!(bench.current_limit_a > 0.0)) throw ModelError("motor.current_limit_a must be positive");
   if (!(bench.resistance_ohm > 0.0)) throw ModelError("bench.R_ohm must be positive");
   if (bench.max_duty < 0.0) throw ModelError("bench.max_duty must not be negative");
   const FrictionParams friction =

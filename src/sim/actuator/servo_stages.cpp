@@ -36,6 +36,11 @@ double bench_servo_torque_nm(const BenchServoParams& params, double commanded_ra
   const double voltage_v = params.supply_v * duty;
   // BAM eq. 13: current (U − K_t·θ̇)/R through the windings, torque K_t·I.
   const double kt = params.torque_constant_nm_per_a;
+  const double current_a = (voltage_v - kt * velocity_rad_s) / params.resistance_ohm;
+  // The driver's current limit: at I_max the torque no longer follows the duty.
+  if (std::abs(current_a) > params.current_limit_a) {
+    return kt * std::copysign(params.current_limit_a, current_a);
+  }
   return kt * voltage_v / params.resistance_ohm - kt * kt * velocity_rad_s / params.resistance_ohm;
 }
 

@@ -39,6 +39,9 @@ struct BenchServoParams {
   double torque_constant_nm_per_a = 1.0;  // K_t, joint side
   double resistance_ohm = 2.6;            // R
   double torque_off_s = 1.0e9;            // log time from which the H-bridge is released
+  // The driver's current limit I_max: the winding current (U − K_t·θ̇)/R is clamped to ±I_max
+  // (motor.current_limit_a; the default 1e3 A never binds on a servo).
+  double current_limit_a = 1.0e3;
 };
 double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
                              double measured_rad, double velocity_rad_s, bool torque_enabled);
