@@ -239,18 +239,20 @@ def number(value, pattern="%.1f"):
 def markdown(rows, nao, args):
     lines = ["Real servo logs (../shared/data/bam), BAM's friction models fitted by `motoflex fit` "
              "(CMA-ES, sigma 0.2, no restarts, seed 1, %d threads; budget 400 + 80 per free "
-             "parameter x %.2f), MAE in mrad. git %s, %s. `scripts/report_real_servos.py`." %
-             (args.threads, args.scale, git_hash(), time.strftime("%Y-%m-%d")), "",
+             "parameter x %.2f), MAE in mrad. git %s. `scripts/report_real_servos.py` (each row "
+             "dated: `--merge` re-runs some rows and keeps the others)." %
+             (args.threads, args.scale, git_hash()), "",
              "| servo (split) | model | free | evaluations | train MAE | held-out MAE | "
-             "BAM published held-out | wall (s) |", "|---|---|---|---|---|---|---|---|"]
+             "BAM published held-out | wall (s) | measured |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         held = number(r["val_mae_mrad"])
         if r.get("val_mae_before_mrad") is not None:
             held = "%.1f → %.1f" % (r["val_mae_before_mrad"], r["val_mae_mrad"])
-        lines.append("| %s | %s | %s | %d | %s | %s | %s | %.0f |" % (
+        lines.append("| %s | %s | %s | %d | %s | %s | %s | %.0f | %s |" % (
             r["servo"], r["model"], number(r["free"], "%d"), r["evaluations"],
             number(r["train_mae_mrad"]), held, number(r["bam_published_val_mae_mrad"]),
-            r["wall_seconds"]))
+            r["wall_seconds"], r.get("date", FIRST_RUN_DATE)))
     lines += ["", "Splits: " + "; ".join("%s: %s" % (k, v["split"]) for k, v in SERVOS.items())]
     if nao:
         lines += ["", "nao_quick (reference_data/nao, recorded from a known truth)%s:" % (
@@ -264,6 +266,26 @@ def markdown(rows, nao, args):
     return lines
 
 
+# The date of the first full run, whose rows carry no date of their own.
+FIRST_RUN_DATE = "2026-11-25"
+
+
+def row_key(row):
+    """(servo, model) with every loop row one key, whatever effects it added."""
+    model = "loop" if row["model"].startswith("motoflex loop") else row["model"]
+    return row["servo"], model
+
+
+def merged_rows(path, rows, nao):
+    """The stored rows with those of this run in their places (new kinds appended)."""
+    with open(path) as f:
+        stored = json.load(f)
+    fresh = {row_key(r): r for r in rows}
+    merged = [fresh.pop(row_key(r), r) for r in stored["rows"]]
+    merged += list(fresh.values())
+    return merged, nao or stored.get("nao", [])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--binary", default=os.path.join(ROOT, "build", "motoflex"))
@@ -275,6 +297,9 @@ def main():
     parser.add_argument("--models", default="1,2,3,4,5,6")
     parser.add_argument("--no-loop", action="store_true")
     parser.add_argument("--no-lm", action="store_true", help="skip the M1 + LM rows")
+    parser.add_argument("--merge", action="store_true",
+                        help="replace only the rows run now in RESULTS/real_servos.json (each row "
+                             "keeps its own date); the others stay as they were")
     parser.add_argument("--nao", action="store_true", help="also nao_quick with/without LM")
     parser.add_argument("--nao-generations", type=int, default=0,
                         help="nao_quick's budget in generations (0: its own)")
@@ -302,6 +327,11 @@ def main():
     nao = nao_rows(args.binary, args.out, args.threads, args.nao_generations,
                    args.nao_lm_iterations) if args.nao else []
     os.makedirs(args.results, exist_ok=True)
+    today = time.strftime("%Y-%m-%d")
+    for row in rows:
+        row["date"] = today
+    if args.merge:
+        rows, nao = merged_rows(os.path.join(args.results, "real_servos.json"), rows, nao)
     document = {"git": git_hash(), "date": time.strftime("%Y-%m-%dT%H:%M:%S"),
                 "threads": args.threads, "budget": "400 + 80 per free parameter, x %g" % args.scale,
                 "splits": {k: v["split"] for k, v in SERVOS.items()}, "rows": rows, "nao": nao}
