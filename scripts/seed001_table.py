@@ -22,12 +22,15 @@ ROWS = [
     ("walk_200_1", "ext_2011", "200 mm/s, 1 s: extended, 2011 semantics, Normal.gnm",
      "209 mm/s, pitch oscillates, every second oscillation further out (original program "
      "rebuilt: 214 mm/s, falls at 5.42 s)"),
-    ("walk_200_1", "ext_physical", "200 mm/s, 1 s: extended, physical semantics", "209 mm/s"),
+    ("walk_200_1", "ext_physical",
+     "200 mm/s, 1 s: extended, physical semantics fitted to (b)'s logs",
+     "209 mm/s"),
     ("walk_50_2", "rigid", "50 mm/s, 2 s: rigid model", "walks on"),
     ("walk_50_2", "ext_2011", "50 mm/s, 2 s: extended, 2011 semantics, Normal.gnm",
      "falls after the first step, sideways (original program rebuilt: falls at 3.08 s, "
      "0.38 m lateral)"),
-    ("walk_50_2", "ext_physical", "50 mm/s, 2 s: extended, physical semantics",
+    ("walk_50_2", "ext_physical",
+     "50 mm/s, 2 s: extended, physical semantics fitted to (b)'s logs",
      "falls after the first step"),
     # The original's own command files replayed (not bundled; `--commands`, README).
     ("commands_200_1", "rigid_2011", "200 mm/s, original's command file: rigid model, box robot",
@@ -35,11 +38,17 @@ ROWS = [
     ("commands_200_1", "ext_2011", "200 mm/s, original's command file: extended, 2011 semantics",
      "209 mm/s (original program rebuilt: 214 mm/s mean over 1-9 s, falls at 5.42 s; its "
      "x87 dWorldStep build: 147 mm/s, falls at 9.2 s)"),
+    ("commands_200_1", "ext_physical",
+     "200 mm/s, original's command file: extended, physical semantics fitted to (b)'s logs",
+     "209 mm/s"),
     ("commands_50_2", "rigid_2011", "50 mm/s, original's command file: rigid model, box robot",
      "walks on"),
     ("commands_50_2", "ext_2011", "50 mm/s, original's command file: extended, 2011 semantics",
      "falls after the first step (original program rebuilt: falls at 3.08 s sideways, 0.38 m "
      "lateral, 17 mm/s)"),
+    ("commands_50_2", "ext_physical",
+     "50 mm/s, original's command file: extended, physical semantics fitted to (b)'s logs",
+     "falls after the first step"),
 ]
 
 

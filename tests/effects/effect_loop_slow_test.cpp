@@ -171,6 +171,7 @@ TEST(RealServoLoop, BeatsTheCoulombViscousModelOnValidationLogs) {
   replace("scenario: ../", "scenario: " + std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/");
   replace("candidates: 3", "candidates: 2");
   replace("max_iterations: 3", "max_iterations: 1");
+  replace("budget: {evaluations: 1500}}", "budget: {evaluations: 300}}");
   std::ofstream(dir / "fit.yaml") << fit;
   // Not forced: `motoflex loop scenarios/fit/servo_pendulum_bam.yaml --data ... --validation ...`
   // must run as written, so the bundled budget has to let the base fit converge (a loop on an
