@@ -49,6 +49,27 @@ def fuzz_target(build, target, minutes):
     }
 
 
+def fuzz_rows(build, minutes, previous):
+    """One row per target: from its log in BUILD when there is one (dated now), else the row of
+    the previous results (it keeps its own date and commit), so that a sanitizer-only update does
+    not drop the fuzz evidence."""
+    earlier = {f["target"]: f for f in previous.get("fuzz", [])}
+    rows = []
+    for target in TARGETS:
+        row = fuzz_target(build, target, minutes)
+        if row:
+            row["date"] = time.strftime("%Y-%m-%d")
+            row["commit"] = git("rev-parse", "--short", "HEAD")
+        else:
+            row = earlier.get(target)
+            if row:
+                row.setdefault("date", previous.get("date", "?")[:10])
+                row.setdefault("commit", previous.get("commit", "?")[:7])
+        if row:
+            rows.append(row)
+    return rows
+
+
 def sanitize_section(log_paths, wall_s, scope):
     """Sums the ctest summaries of one or more saved runs (a whole tier, or module by module)."""
     tests = failed = skipped = 0
@@ -68,6 +89,8 @@ def sanitize_section(log_paths, wall_s, scope):
             failed_tests += re.findall(r"^\s*\d+ - (\S+) \((?!Skipped)", failed_part[1], re.M)
         skipped += len(re.findall(r"^\s*\d+ - \S+ \(Skipped\)", text, re.M))
     return {
+        "date": time.strftime("%Y-%m-%d"),
+        "commit": git("rev-parse", "--short", "HEAD"),
         "command": "scripts/test --sanitize",
         "scope": scope,
         "tests": tests,
@@ -91,17 +114,19 @@ def markdown(results, fixes):
              f"{results['date']}, load average {results['load_average']} on {results['cores']} cores "
              "shared with other jobs.", "",
              "## Fuzzing (`scripts/fuzz --minutes N`: libFuzzer, ASan + UBSan, clang)", "",
-             "| target | minutes | executions | exec/s | corpus inputs | findings now | regression inputs |",
-             "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
+             "| target | minutes | executions | exec/s | corpus inputs | findings now | regression inputs | run |",
+             "| --- | ---: | ---: | ---: | ---: | ---: | ---: | --- |"]
     for f in results["fuzz"]:
         lines.append(f"| {f['target']} | {f['minutes']} | {f['executions']} | {f['executions_per_s']} | "
-                     f"{f['corpus_inputs']} | {len(f['findings'])} | {len(f['regression_inputs'])} |")
+                     f"{f['corpus_inputs']} | {len(f['findings'])} | {len(f['regression_inputs'])} | "
+                     f"{f.get('date', '?')}, {f.get('commit', '?')} |")
     lines += ["", "## What fuzzing and the sanitizers found, and the fix", ""]
     lines += [f"- **{x['target']}** `{x['input']}`: {x['cause']} Fix: {x['fix']}" for x in fixes] or ["- nothing"]
     s = results.get("sanitize")
     lines += ["", "## ASan + UBSan fast tier (`scripts/test --sanitize`)", ""]
     if s:
-        lines += [f"Scope: {s.get('scope', 'the whole fast tier')}.", ""]
+        lines += [f"Scope: {s.get('scope', 'the whole fast tier')}. Run {s.get('date', '?')} at "
+                  f"{s.get('commit', '?')}.", ""]
         with_build = (f", {s['wall_s_with_build']:.0f} s with the build" if s["wall_s_with_build"]
                       else "")
         lines += [f"{s['passed']} of {s['tests']} tests passed ({s['failed']} failed, "
@@ -135,7 +160,7 @@ def main():
         "date": time.strftime("%Y-%m-%d %H:%M:%S %Z"),
         "load_average": round(os.getloadavg()[0], 2),
         "cores": os.cpu_count(),
-        "fuzz": [f for t in TARGETS if (f := fuzz_target(pathlib.Path(args.build), t, args.minutes))],
+        "fuzz": fuzz_rows(pathlib.Path(args.build), args.minutes, previous),
         "sanitize": (sanitize_section(args.sanitize_log, args.sanitize_wall_s, args.sanitize_scope) if args.sanitize_log
                      else previous.get("sanitize")),
     }
