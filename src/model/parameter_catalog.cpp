@@ -103,6 +103,9 @@ const DomainRule kDomainRules[] = {
     {"contact.mu", true, kNonNegative},
     {"contact.slip", true, kNonNegative},
     {"bench.max_duty", true, kUnitInterval},
+    // The bench law's driver limit has no "off" value (its neutral is 1e3 A); the firmware laws'
+    // servo.<S>.current_limit_a takes 0 for none (the generic rule below).
+    {"motor.current_limit_a", true, kPositive},
     {"R_ohm", false, kPositive},
     {"L_h", false, kNonNegative},
     {"Kt_nm_per_a", false, kPositive},

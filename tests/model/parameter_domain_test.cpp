@@ -28,6 +28,9 @@ TEST(ParameterDomain, RulesOfTheCatalog) {
   EXPECT_FALSE(parameter_domain("joint.LKneePitch.friction_model").contains(0.0));
   EXPECT_FALSE(parameter_domain("pid.kp_v_per_rad").contains(-1.0));
   EXPECT_FALSE(parameter_domain("servo.kp_divisor").contains(0.0));
+  // The bench's current limit must be positive; a firmware law's 0 means no limit.
+  EXPECT_FALSE(parameter_domain("motor.current_limit_a").contains(0.0));
+  EXPECT_TRUE(parameter_domain("servo.arm.current_limit_a").contains(0.0));
   // Names no rule knows (an offset, a drift) take any finite number, never NaN or infinity.
   EXPECT_TRUE(parameter_domain("joint.LKneePitch.encoder_offset_rad").contains(-0.3));
   EXPECT_TRUE(parameter_domain("motor.R_drift_per_s").contains(-0.01));
