@@ -43,8 +43,11 @@ def main():
     args = parser.parse_args()
     with open(os.path.join(args.loop_dir, "loop.json")) as f:
         loop = json.load(f)
-    measured_path = args.measured or next(iter(glob.glob(
-        os.path.join(args.loop_dir, "**", args.stem + ".csv"), recursive=True)), None)
+    # The measured log is the imported one: every fit's best/ folder holds a simulated file of
+    # the same name, which must never be taken for the measurement.
+    measured_path = args.measured or next(iter(sorted(glob.glob(
+        os.path.join(args.loop_dir, "**", "imported", "**", args.stem + ".csv"),
+        recursive=True))), None)
     base = series(loop["base_run_dir"], args.stem)
     final = series(loop["final_run_dir"], args.stem)
     measured = read(measured_path) if measured_path else None

@@ -143,6 +143,7 @@ void bind_fit_spec(py::module_& m) {
       .def_readwrite("joint_weights", &FitSpec::joint_weights)
       .def_readwrite("imu_weight", &FitSpec::imu_weight)
       .def_readwrite("window_s", &FitSpec::window_s)
+      .def_readwrite("absolute_error", &FitSpec::absolute_error)
       .def_readwrite("early_termination", &FitSpec::early_termination)
       .def_readwrite("strategy", &FitSpec::strategy)
       .def_readwrite("budget", &FitSpec::budget)

@@ -180,11 +180,13 @@ LoopRefit refit_with(const Evaluated& current, const RefitStart& candidate, cons
   row.seconds = refit.fit.summary.value("seconds", 0.0);
   // The gain is measured as the fit measures its error: on the joints (with their weights),
   // and on the IMU too when the fitness scores it.
-  row.significant = refit.validation.channel_rms_rad <=
-                        (1.0 - options.min_gain) * current.validation.channel_rms_rad &&
+  // (As the fit measures it: RMS for squared errors, mean absolute error for absolute ones.)
+  row.significant = refit.validation.fit_error_rad <=
+                        (1.0 - options.min_gain) * current.validation.fit_error_rad &&
                     refit.validation.bic < current.validation.bic;
-  std::printf("loop:   %s: validation RMS %.4g -> %.4g deg (%s)\n", row.effect.c_str(),
-              current.validation.rms_deg, row.val_rms_deg,
+  std::printf("loop:   %s: validation RMS %.4g -> %.4g deg, MAE %.4g -> %.4g mrad (%s)\n",
+              row.effect.c_str(), current.validation.rms_deg, row.val_rms_deg,
+              1e3 * current.validation.mae_rad, 1e3 * row.val_mae_rad,
               row.significant ? "significant" : "not significant");
   std::fflush(stdout);
   return row;

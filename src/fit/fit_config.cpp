@@ -192,6 +192,7 @@ FitnessOptions fitness_options(const FitSpec& spec, const RobotModel& model) {
   fitness.settle_s = spec.fitness_settle_s;
   fitness.imu_weight = spec.imu_weight;
   fitness.window_s = spec.window_s;
+  fitness.absolute_error = spec.absolute_error;
   if (!spec.joint_weights.empty()) {
     fitness.joint_weights.assign(model.actuators.size(), 1.0);
     for (const auto& [joint, weight] : spec.joint_weights) {

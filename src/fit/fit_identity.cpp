@@ -55,6 +55,7 @@ nlohmann::json fit_identity(const FitConfig& config) {
   // Only when used, so that the hashes of existing joint-only run dirs stay valid.
   if (config.fitness.imu_weight > 0.0) id["fitness"]["imu_weight"] = config.fitness.imu_weight;
   if (config.fitness.window_s > 0.0) id["fitness"]["window_s"] = config.fitness.window_s;
+  if (config.fitness.absolute_error) id["fitness"]["error"] = "absolute";
   id["strategy"] = strategy_to_json(config.strategy);
   // Only when asked for, so that the hashes of existing run dirs stay valid.
   if (!config.polish.method.empty()) id["polish"] = polish_to_json(config.polish);

@@ -17,7 +17,8 @@ nlohmann::ordered_json fit_inputs_json(const FitConfig& config) {
   out["fitness"] = {{"m", config.fitness.m},
                     {"settle_s", config.fitness.settle_s},
                     {"window_s", config.fitness.window_s},
-                    {"imu_weight", config.fitness.imu_weight}};
+                    {"imu_weight", config.fitness.imu_weight},
+                    {"error", config.fitness.absolute_error ? "absolute" : "squared"}};
   nlohmann::ordered_json free = nlohmann::ordered_json::array();
   for (const FreeParameter& p : config.free_parameters) {
     // A tied pattern ("joint.*.friction_nm") names its unit by the same suffix as its targets.

@@ -72,6 +72,24 @@ std::vector<std::string> list_logs(const std::string& folder_or_file, const std:
   return logs;
 }
 
+namespace {
+
+// The frames within the first window_s seconds of a log (all of them for window_s = 0).
+std::size_t frames_in_window(const JointLog& log, double window_s, const std::string& path) {
+  if (!(window_s > 0.0)) return log.frames();
+  std::size_t frames = 0;
+  while (frames < log.frames() && log.time_s[frames] - log.time_s[0] <= window_s + 1e-9) {
+    ++frames;
+  }
+  if (frames < 2) {
+    throw InputError(path, 0, "fitness.window_s",
+                     "window of " + std::to_string(window_s) + " s keeps fewer than 2 frames");
+  }
+  return frames;
+}
+
+}  // namespace
+
 std::vector<FitCase> load_fit_cases(const Scenario& scenario,
                                     const std::vector<std::string>& log_paths,
                                     const FitnessOptions& fitness) {
@@ -104,17 +122,7 @@ std::vector<FitCase> load_fit_cases(const Scenario& scenario,
     }
     FitCase fit_case;
     fit_case.name = fs::path(path).stem().string();
-    std::size_t frames = log.frames();
-    if (window_s > 0.0) {
-      frames = 0;
-      while (frames < log.frames() && log.time_s[frames] - log.time_s[0] <= window_s + 1e-9) {
-        ++frames;
-      }
-      if (frames < 2) {
-        throw InputError(path, 0, "fitness.window_s",
-                         "window of " + std::to_string(window_s) + " s keeps fewer than 2 frames");
-      }
-    }
+    const std::size_t frames = frames_in_window(log, window_s, path);
     std::vector<double> time_s(log.time_s.begin(),
                                log.time_s.begin() + static_cast<std::ptrdiff_t>(frames));
     std::vector<double> commanded(frames * n), measured(frames * n);
@@ -126,6 +134,12 @@ std::vector<FitCase> load_fit_cases(const Scenario& scenario,
       }
     }
     fit_case.commands = CommandTrajectory(std::move(time_s), std::move(commanded), n);
+    if (!log.supply_v.empty()) {
+      // Smoothed over the whole log, then cut to the window like the angles.
+      std::vector<double> supply = CommandTrajectory::smoothed_supply_v(log.time_s, log.supply_v);
+      supply.resize(frames);
+      fit_case.commands.set_smoothed_supply_v(std::move(supply));
+    }
     fit_case.measured_rad = std::move(measured);
     if (!log.imu_roll_rad.empty() && !log.imu_pitch_rad.empty()) {
       fit_case.measured_imu_rad.resize(2 * frames);

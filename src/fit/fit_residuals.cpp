@@ -44,7 +44,9 @@ bool FitResiduals::evaluate(const std::vector<double>& x, double* out) const {
     for (std::size_t t = first_frame_[c]; t < f.cases()[c].commands.frames(); ++t) {
       f.simulated_channels(rollouts[c], t, sim.data());
       f.measured_channels(c, t, real.data());
-      for (std::size_t j = 0; j < channels; ++j) out[k++] = scale_[c] * (real[j] - sim[j]);
+      for (std::size_t j = 0; j < channels; ++j) {
+        out[k++] = scale_[c] * f.channel_residual(j, real[j] - sim[j]);
+      }
     }
   }
   return true;

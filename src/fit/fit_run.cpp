@@ -77,7 +77,7 @@ ErrorSummary summarize_errors(const FitnessFunction& fitness, const ParameterSet
   const std::size_t n = fitness.model().actuators.size();
   const std::size_t k = fitness.channels();
   std::vector<double> measured(k), simulated(k);
-  double squared = 0.0, absolute = 0.0;
+  double squared = 0.0, absolute = 0.0, fit_terms = 0.0;
   std::size_t joint_samples = 0;
   for (std::size_t c = 0; c < fitness.cases().size(); ++c) {
     const FitCase& fit_case = fitness.cases()[c];
@@ -92,6 +92,8 @@ ErrorSummary summarize_errors(const FitnessFunction& fitness, const ParameterSet
       fitness.simulated_channels(r, f, simulated.data());
       for (std::size_t i = 0; i < k; ++i) {
         squared += (measured[i] - simulated[i]) * (measured[i] - simulated[i]);
+        const double r = fitness.channel_residual(i, measured[i] - simulated[i]);
+        fit_terms += r * r;  // the frame's term of the fit's own error sum
         ++out.samples;
       }
     }
@@ -100,7 +102,8 @@ ErrorSummary summarize_errors(const FitnessFunction& fitness, const ParameterSet
   out.rms_deg = out.detail.rms_deg;
   out.mae_rad = absolute / static_cast<double>(std::max<std::size_t>(joint_samples, 1));
   out.channel_rms_rad = std::sqrt(squared / samples);
-  out.bic = samples * std::log(std::max(squared / samples, 1e-300)) +
+  out.fit_error_rad = fitness.options().absolute_error ? fit_terms / samples : out.channel_rms_rad;
+  out.bic = 2.0 * samples * std::log(std::max(out.fit_error_rad, 1e-150)) +
             static_cast<double>(free_parameters) * std::log(samples);
   return out;
 }

@@ -80,7 +80,7 @@ void read_effects(const YamlValue& list, FitSpec& spec) {
 
 void read_fitness(const YamlValue& fitness, FitSpec& spec) {
   fitness.require_keys_within(
-      {"m", "settle_s", "weights", "imu_weight", "window_s", "early_termination"});
+      {"m", "error", "settle_s", "weights", "imu_weight", "window_s", "early_termination"});
   ErrorCollector errors;
   errors.check([&] { spec.early_termination = fitness.get_bool("early_termination", true); });
   errors.check([&] {
@@ -97,6 +97,13 @@ void read_fitness(const YamlValue& fitness, FitSpec& spec) {
   errors.check([&] {
     spec.imu_weight = fitness.get_double("imu_weight", 0.0);
     if (!(spec.imu_weight >= 0.0)) fitness.at("imu_weight").fail("must be >= 0");
+  });
+  errors.check([&] {
+    const std::string norm = fitness.get_string("error", "squared");
+    if (norm != "squared" && norm != "absolute") {
+      fitness.at("error").fail("must be squared or absolute, found '" + norm + "'");
+    }
+    spec.absolute_error = norm == "absolute";
   });
   errors.check([&] {
     spec.window_s = fitness.get_double("window_s", 0.0);

@@ -110,6 +110,7 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
   }
   if (spec.imu_weight > 0.0) fitness["imu_weight"] = spec.imu_weight;
   if (spec.window_s > 0.0) fitness["window_s"] = spec.window_s;
+  if (spec.absolute_error) fitness["error"] = "absolute";
   fit["fitness"] = fitness;
   fit["strategy"] = strategy_to_json(spec.strategy);
   fit["budget"] = budget_json(spec.budget);

@@ -61,13 +61,12 @@ CaseScore FitnessFunction::score_case(std::size_t c, const ParameterSet& paramet
     const double* sim = &partial.measured_rad[frame * n];
     const double* real = &fit_case.measured_rad[frame * n];
     for (std::size_t j = 0; j < n; ++j) {
-      const double e = real[j] - sim[j];
-      score.squared_error_rad2 += weights_[j] * e * e;
+      score.squared_error_rad2 += weights_[j] * frame_error(real[j] - sim[j]);
     }
     if (scores_imu()) {
       const double roll = fit_case.measured_imu_rad[2 * frame] - partial.imu_roll_rad[frame];
       const double pitch = fit_case.measured_imu_rad[2 * frame + 1] - partial.imu_pitch_rad[frame];
-      score.squared_error_rad2 += options_.imu_weight * (roll * roll + pitch * pitch);
+      score.squared_error_rad2 += options_.imu_weight * (frame_error(roll) + frame_error(pitch));
     }
     ++score.frames;
     if (std::isfinite(stop_threshold) &&
@@ -162,6 +161,15 @@ void FitnessFunction::measured_channels(std::size_t c, std::size_t frame, double
     out[n] = w * fit_case.measured_imu_rad[2 * frame];
     out[n + 1] = w * fit_case.measured_imu_rad[2 * frame + 1];
   }
+}
+
+double FitnessFunction::channel_residual(std::size_t channel, double difference) const {
+  if (!options_.absolute_error) return difference;
+  // difference = √w·e, so √w·|difference| = w·|e|, the frame's term of the error sum.
+  const std::size_t n = weights_.size();
+  const double root_weight = std::sqrt(channel < n ? weights_[channel] : options_.imu_weight);
+  const double magnitude = std::sqrt(root_weight * std::fabs(difference));
+  return difference < 0.0 ? -magnitude : magnitude;
 }
 
 std::string FitnessFunction::channel_name(std::size_t channel) const {

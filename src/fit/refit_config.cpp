@@ -68,6 +68,7 @@ FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, con
   spec.joint_weights = from.joint_weights;
   spec.imu_weight = from.imu_weight;
   spec.window_s = from.window_s;
+  spec.absolute_error = from.absolute_error;
   spec.early_termination = from.early_termination;
   spec.strategy = from.loop.refit_strategy;
   spec.budget = from.loop.refit_budget;

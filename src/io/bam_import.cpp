@@ -224,6 +224,11 @@ std::optional<std::size_t> read_entries(const json& entries, const Fields& field
     log.time_s.push_back(t);
     log.commanded_rad.push_back(number_at("goal_position"));
     log.measured_rad.push_back(number_at("position"));
+    // The servo's own supply reading (register/10, V): kept when every entry has one.
+    const auto volts = find_key(entry, "input_volts");
+    if (volts && (i == 0 || log.supply_v.size() == i)) {
+      log.supply_v.push_back(fields.positive(*volts, prefix + ".input_volts"));
+    }
     if (const auto enable = find_key(entry, "torque_enable")) {
       if (!enable->is_boolean()) {
         fields.fail(prefix + ".torque_enable",
@@ -313,6 +318,12 @@ BamImport import_document(const json& doc, const std::string& shown,
   const std::optional<double> dt_s = read_header(doc, fields, result, notes);
   const std::optional<std::size_t> torque_off_entry = read_entries(entries, fields, dt_s, log);
   describe_sampling(dt_s, log, notes);
+  if (log.supply_v.size() != log.time_s.size()) {
+    if (!log.supply_v.empty()) notes.push_back("input_volts missing in some entries: not imported");
+    log.supply_v.clear();
+  } else {
+    notes.push_back("the logged input_volts is the supply_v column (servo: bench drives from it)");
+  }
   if (torque_off_entry) {
     result.torque_off_s = log.time_s[*torque_off_entry];
     log.meta.parameters["bench.torque_off_s"] = *result.torque_off_s;

@@ -19,7 +19,7 @@ namespace {
 using detail::AngleUnit;
 using detail::Sidecar;
 
-enum class ColumnKind { kTime, kCommanded, kMeasured, kImuRoll, kImuPitch, kExtra };
+enum class ColumnKind { kTime, kCommanded, kMeasured, kImuRoll, kImuPitch, kSupply, kExtra };
 
 struct Column {
   ColumnKind kind;
@@ -49,6 +49,7 @@ struct Layout {
   bool has_measured = false;
   bool has_roll = false;
   bool has_pitch = false;
+  bool has_supply = false;
   std::vector<std::string> extras;  // the file's columns we do not read, in file order
 };
 
@@ -224,6 +225,10 @@ Layout parse_header(const std::vector<std::string_view>& names, const Sidecar* s
       column.kind = ours == "imu.roll" ? ColumnKind::kImuRoll : ColumnKind::kImuPitch;
       (ours == "imu.roll" ? layout.has_roll : layout.has_pitch) = true;
       angle_scale(units.imu, column);
+    } else if (ours == "supply_v") {
+      if (layout.has_supply) throw InputError(path, line, name, "a second 'supply_v' column");
+      column.kind = ColumnKind::kSupply;  // V, not an angle: no unit conversion
+      layout.has_supply = true;
     } else if (ours.ends_with(".cmd") || ours.ends_with(".meas")) {
       const bool commanded = ours.ends_with(".cmd");
       joint = ours.substr(0, ours.size() - (commanded ? 4 : 5));
@@ -413,6 +418,13 @@ void store_row(const std::vector<std::string_view>& fields, int number, const Ro
         break;
       case ColumnKind::kImuPitch:
         log.imu_pitch_rad.push_back(value);
+        break;
+      case ColumnKind::kSupply:
+        if (!(value > 0.0)) {
+          throw InputError(csv_path, number, column.name,
+                           "a supply voltage must be positive, found " + shortest(value));
+        }
+        log.supply_v.push_back(value);
         break;
       case ColumnKind::kExtra:
         break;

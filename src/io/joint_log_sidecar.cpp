@@ -53,7 +53,7 @@ std::vector<ColumnMapping> read_columns(const YamlValue& columns) {
     if (!is_our_column_name(ours)) {
       value.fail("'" + ours +
                  "' is not one of our column names (time_s, <joint>.cmd, <joint>.meas, "
-                 "imu.roll, imu.pitch)");
+                 "imu.roll, imu.pitch, supply_v)");
     }
     const std::string file_column = value.as_string();
     for (const ColumnMapping& earlier : out) {
@@ -71,8 +71,8 @@ std::vector<ColumnMapping> read_columns(const YamlValue& columns) {
 
 bool is_our_column_name(const std::string& name) {
   // "<joint>.cmd" with an empty joint counts too, so that the reader can say what is wrong.
-  return name == "time_s" || name == "imu.roll" || name == "imu.pitch" || name.ends_with(".cmd") ||
-         name.ends_with(".meas");
+  return name == "time_s" || name == "imu.roll" || name == "imu.pitch" || name == "supply_v" ||
+         name.ends_with(".cmd") || name.ends_with(".meas");
 }
 
 Sidecar read_joint_log_sidecar(const std::string& path) {

@@ -64,6 +64,7 @@ void check_log(const std::string& csv_path, const JointLog& log) {
   check_size(log.measured_rad, frames * joints, "measured_rad");
   check_size(log.imu_roll_rad, frames, "imu_roll_rad");
   check_size(log.imu_pitch_rad, frames, "imu_pitch_rad");
+  check_size(log.supply_v, frames, "supply_v");
   if (joints > 0 && !log.has_commanded() && !log.has_measured()) {
     reject(csv_path, "joints are named but there are no commanded or measured angles");
   }
@@ -82,6 +83,7 @@ void check_log(const std::string& csv_path, const JointLog& log) {
   check_finite(csv_path, log.measured_rad, "measured_rad");
   check_finite(csv_path, log.imu_roll_rad, "imu_roll_rad");
   check_finite(csv_path, log.imu_pitch_rad, "imu_pitch_rad");
+  check_finite(csv_path, log.supply_v, "supply_v");
 
   const JointLogMeta& meta = log.meta;
   if (meta.robot.empty()) reject(csv_path, "meta.robot is empty");
@@ -106,6 +108,7 @@ std::string format_csv(const JointLog& log, int digits) {
   }
   if (!log.imu_roll_rad.empty()) out += ",imu.roll";
   if (!log.imu_pitch_rad.empty()) out += ",imu.pitch";
+  if (!log.supply_v.empty()) out += ",supply_v";
   out += '\n';
   for (std::size_t frame = 0; frame < log.frames(); ++frame) {
     append_number(out, log.time_s[frame]);
@@ -126,6 +129,10 @@ std::string format_csv(const JointLog& log, int digits) {
     if (!log.imu_pitch_rad.empty()) {
       out += ',';
       append_number(out, log.imu_pitch_rad[frame], digits);
+    }
+    if (!log.supply_v.empty()) {
+      out += ',';
+      append_number(out, log.supply_v[frame], digits);
     }
     out += '\n';
   }

@@ -49,7 +49,9 @@ CommandTrajectory read_log_commands(const RobotModel& model, const std::string& 
   if (description != nullptr) {
     *description = log.meta.motion.empty() ? "replay of " + path : log.meta.motion;
   }
-  return CommandTrajectory(log.time_s, std::move(angles), n);
+  CommandTrajectory trajectory(log.time_s, std::move(angles), n);
+  if (!log.supply_v.empty()) trajectory.set_supply_v(log.supply_v);
+  return trajectory;
 }
 
 CommandTrajectory truncate_trajectory(const CommandTrajectory& in, double duration_s) {
@@ -59,7 +61,14 @@ CommandTrajectory truncate_trajectory(const CommandTrajectory& in, double durati
     times.push_back(in.time_s(f));
     for (std::size_t j = 0; j < in.joints(); ++j) angles.push_back(in.angle_rad(f, j));
   }
-  return CommandTrajectory(std::move(times), std::move(angles), in.joints());
+  const std::size_t kept = times.size();
+  CommandTrajectory out(std::move(times), std::move(angles), in.joints());
+  if (in.has_supply()) {
+    // Already smoothed over the whole log: keep those values rather than re-average the cut.
+    out.set_smoothed_supply_v(std::vector<double>(
+        in.supply_v().begin(), in.supply_v().begin() + static_cast<std::ptrdiff_t>(kept)));
+  }
+  return out;
 }
 
 }  // namespace motoflex

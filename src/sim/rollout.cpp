@@ -129,7 +129,8 @@ struct Rollout::Impl {
   std::vector<JointEncoder> encoders;
   std::vector<double> applied_torque_nm;
   dContact contact_template{};
-  double elapsed_s = 0.0;         // since the rollout was created (settling included)
+  double elapsed_s = 0.0;  // since the rollout was created (settling included)
+  double logged_supply_v = std::numeric_limits<double>::quiet_NaN();  // NaN: none logged
   bool step_interrupted = false;  // an ODE error was thrown out of dWorldStep
 
   Impl(const RobotModel& m, const ParameterSet& values, const RolloutOptions& o)
@@ -516,6 +517,7 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
   input.elapsed_s = elapsed_s;
   input.settle_s = options.settle_s;
   input.total_current_a = total_current_a;
+  input.logged_supply_v = logged_supply_v;
   for (std::size_t i = 0; i < n; ++i) {
     const detail::OdeAxis& axis = axes[i];
     input.command_rad = now_rad[i];
@@ -670,6 +672,10 @@ Rollout::~Rollout() = default;
 
 std::size_t Rollout::joints() const {
   return impl_->axes.size();
+}
+
+void Rollout::set_logged_supply_v(double supply_v) {
+  impl_->logged_supply_v = supply_v;
 }
 
 bool Rollout::step(const double* command_now_rad, const double* command_next_rad) {

@@ -66,6 +66,10 @@ RolloutResult run_rollout(const RobotModel& model, const ParameterSet& parameter
 
   // Settle on the first commanded pose so the servos reach a steady state before t = 0.
   const auto settle_steps = static_cast<std::size_t>(std::llround(options.settle_s / options.dt_s));
+  std::size_t hint_supply = 0;
+  if (commands.has_supply()) {
+    rollout->set_logged_supply_v(commands.supply_v_at(commands.start_s(), hint_supply));
+  }
   for (std::size_t k = 0; k < settle_steps; ++k) {
     if (!rollout->step(first.data(), first.data())) break;
     ++result.physics_steps;
@@ -94,6 +98,9 @@ RolloutResult run_rollout(const RobotModel& model, const ParameterSet& parameter
     if (frame >= commands.frames()) break;
     commands.sample(start + t, now.data(), hint_now);
     commands.sample(start + t + options.dt_s, next.data(), hint_next);
+    if (commands.has_supply()) {
+      rollout->set_logged_supply_v(commands.supply_v_at(start + t, hint_supply));
+    }
     rollout->step(now.data(), next.data());
     ++result.physics_steps;
     ++step;

@@ -161,7 +161,8 @@ TEST(RealServoLoop, BeatsTheCoulombViscousModelOnValidationLogs) {
   overrides.data = (dir / "train").string();
   overrides.validation = (dir / "validation").string();
   overrides.out = (dir / "run").string();
-  // The bundled config with a CI-sized loop: one iteration, the top two candidates.
+  // The bundled config with a CI-sized loop: one iteration (its five candidates and their
+  // 1500-evaluation refits: the load-friction refit is still improving at 1000).
   std::string fit =
       read_text(fs::path(MOTOFLEX_SOURCE_DIR) / "scenarios/fit/servo_pendulum_bam.yaml");
   const auto replace = [&fit](const std::string& from, const std::string& to) {
@@ -169,9 +170,7 @@ TEST(RealServoLoop, BeatsTheCoulombViscousModelOnValidationLogs) {
     fit.replace(fit.find(from), from.size(), to);
   };
   replace("scenario: ../", "scenario: " + std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/");
-  replace("candidates: 3", "candidates: 2");
   replace("max_iterations: 3", "max_iterations: 1");
-  replace("budget: {evaluations: 1500}}", "budget: {evaluations: 300}}");
   std::ofstream(dir / "fit.yaml") << fit;
   // Not forced: `motoflex loop scenarios/fit/servo_pendulum_bam.yaml --data ... --validation ...`
   // must run as written, so the bundled budget has to let the base fit converge (a loop on an
@@ -183,7 +182,7 @@ TEST(RealServoLoop, BeatsTheCoulombViscousModelOnValidationLogs) {
   const double final_mae = result.iterations.back().val_mae_after_rad;
   std::printf("BAM XL330 validation MAE: M1 %.3f mrad -> loop %.3f mrad\n", 1e3 * m1_mae,
               1e3 * final_mae);
-  EXPECT_LT(final_mae, m1_mae);
+  EXPECT_LT(final_mae, 0.8 * m1_mae);  // 2026-11-26: 59.5 -> 41.5 mrad
   EXPECT_FALSE(result.final_model == result.base_model) << "the loop added nothing";
 }
 

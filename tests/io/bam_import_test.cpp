@@ -202,6 +202,14 @@ TEST_F(BamImportTest, EveryRealTrajectoryLogRoundTripsExactly) {
     if (expected.torque_off_s) {
       EXPECT_NE(back.meta.notes.find("torque released at t = "), std::string::npos);
     }
+    // The servo's own supply reading becomes the supply_v column, value for value.
+    const json& entries = doc.at("entries");
+    if (entries.front().contains("input_volts")) {
+      ASSERT_EQ(back.supply_v.size(), entries.size());
+      for (std::size_t i = 0; i < entries.size(); i += 97) {
+        EXPECT_EQ(back.supply_v[i], entries[i].at("input_volts").get<double>()) << i;
+      }
+    }
   }
 }
 

@@ -92,6 +92,7 @@ JointLog make_log() {
     }
     log.imu_roll_rad.push_back(std::sqrt(static_cast<double>(f)) * 1e-5);
     log.imu_pitch_rad.push_back(-std::atan(static_cast<double>(f)));
+    log.supply_v.push_back(7.4 - 0.1 * std::sin(static_cast<double>(f)) / 3.0);
   }
   // Values that a fixed-precision printer would not round-trip.
   log.commanded_rad[0] = -0.0;
@@ -131,6 +132,7 @@ TEST_F(JointLogTest, RoundTripIsBitIdentical) {
   expect_bit_identical(log.measured_rad, read.measured_rad);
   expect_bit_identical(log.imu_roll_rad, read.imu_roll_rad);
   expect_bit_identical(log.imu_pitch_rad, read.imu_pitch_rad);
+  expect_bit_identical(log.supply_v, read.supply_v);
   EXPECT_EQ(read.meta.robot, log.meta.robot);
   EXPECT_EQ(read.meta.rate_hz, log.meta.rate_hz);
   EXPECT_EQ(read.meta.motion, log.meta.motion);
@@ -275,6 +277,10 @@ TEST_F(JointLogTest, RowErrorsNameLineAndColumn) {
   check("nan.csv", "0.02,nan,2,3", "a.cmd");
   check("neg_nan.csv", "0.02,-nan,2,3", "a.cmd");
   check("inf.csv", "0.02,1,2,inf", "imu.roll");
+  const std::string bad = write("supply.csv", "time_s,a.cmd,supply_v\n0,1,7.4\n0.02,1,-1\n");
+  const std::string message =
+      expect_input_error([&] { read_joint_log(bad, {}); }, bad, 3, "supply_v");
+  EXPECT_NE(message.find("positive"), std::string::npos) << message;
   check("neg_inf.csv", "0.02,1,-infinity,3", "b.cmd");
   check("huge.csv", "0.02,1e999,2,3", "a.cmd");
   check("time_word.csv", "later,1,2,3", "time_s");

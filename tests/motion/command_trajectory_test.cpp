@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 namespace motoflex {
@@ -36,6 +37,51 @@ TEST(CommandTrajectoryTest, LinearInterpolationBetweenIrregularFrames) {
   trajectory.sample(1.0, out, hint);
   EXPECT_EQ(out[0], 0.0);
   EXPECT_EQ(out[1], 5.0);
+}
+
+// The logged supply is smoothed by a centred moving average over 0.1 s: a constant stays exact,
+// a step becomes a ramp exactly 0.1 s wide centred on it, and the value at a frame is the mean of
+// the frames within ±0.05 s of it.
+TEST(CommandTrajectoryTest, LoggedSupplyIsACentredMovingAverage) {
+  std::vector<double> t, q, constant, step;
+  for (int k = 0; k <= 400; ++k) {  // 5 ms frames, 2 s
+    t.push_back(0.005 * k);
+    q.push_back(0.0);
+    constant.push_back(7.4);
+    step.push_back(k < 200 ? 6.0 : 8.0);  // steps between 0.995 s and 1.0 s
+  }
+  CommandTrajectory flat(t, q, 1);
+  flat.set_supply_v(constant);
+  for (const double v : flat.supply_v()) EXPECT_DOUBLE_EQ(v, 7.4);
+  CommandTrajectory trajectory(t, q, 1);
+  EXPECT_FALSE(trajectory.has_supply());
+  std::size_t hint = 0;
+  EXPECT_TRUE(std::isnan(trajectory.supply_v_at(0.5, hint)));
+  trajectory.set_supply_v(step);
+  ASSERT_TRUE(trajectory.has_supply());
+  const std::vector<double>& smooth = trajectory.supply_v();
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      if (std::abs(t[k] - t[i]) <= 0.05 + 1e-9) {
+        sum += step[k];
+        ++count;
+      }
+    }
+    EXPECT_NEAR(smooth[i], sum / count, 1e-12) << t[i];
+  }
+  EXPECT_EQ(smooth[189], 6.0);  // 0.945 s: the window ends at 0.995 s
+  EXPECT_EQ(smooth[211], 8.0);  // 1.055 s: it starts at 1.005 s
+  EXPECT_NEAR(trajectory.supply_v_at(0.9975, hint), 7.0, 0.05);  // half way up the ramp
+  // Between frames linear; clamped beyond the ends.
+  EXPECT_NEAR(trajectory.supply_v_at(0.9725, hint), 0.5 * (smooth[194] + smooth[195]), 1e-12);
+  EXPECT_EQ(trajectory.supply_v_at(-1.0, hint), 6.0);
+  EXPECT_EQ(trajectory.supply_v_at(5.0, hint), 8.0);
+  EXPECT_THROW(trajectory.set_supply_v(std::vector<double>(3, 7.4)), std::invalid_argument);
+  std::vector<double> negative = constant;
+  negative[7] = -1.0;
+  EXPECT_THROW(trajectory.set_smoothed_supply_v(negative), std::invalid_argument);
 }
 
 }  // namespace

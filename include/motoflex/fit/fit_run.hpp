@@ -34,7 +34,12 @@ struct ErrorSummary {
   std::size_t samples = 0;  // scored frames × the fitness's channels
   // Over the fitness's channels (joints with their weights, and the IMU when it is scored):
   double channel_rms_rad = 0.0;  // √(MSE)
-  double bic = 0.0;              // samples·ln(MSE) + free·ln(samples)
+  // The error as the fit measures it: √(MSE) for squared errors, the mean w·|e| for absolute
+  // ones (FitnessOptions::absolute_error), so that the loop judges a refit by its own loss.
+  double fit_error_rad = 0.0;
+  // 2·samples·ln(fit_error) + free·ln(samples): Gaussian errors' BIC for squared errors,
+  // Laplace errors' for absolute ones (up to constants that cancel between two models).
+  double bic = 0.0;
   DetailedEvaluation detail;
 };
 ErrorSummary summarize_errors(const FitnessFunction& fitness, const ParameterSet& set,

@@ -18,7 +18,8 @@
 //     gear.*.backlash_rad: {lower: 1e-7, upper: 1e-2, each: true}    # one value per match
 //   fixed: {motor.stiffness: 0.7}      # values on top of the robot defaults
 //   effects: [stribeck, sensor_delay]  # frees each effect's parameters (effect_library.hpp)
-//   fitness: {m: 2, settle_s: 0.0, weights: {LKneePitch: 2.0}, imu_weight: 0, window_s: 0,
+//   fitness: {m: 2, error: squared, settle_s: 0.0, weights: {LKneePitch: 2.0}, imu_weight: 0,
+//   window_s: 0,
 //             early_termination: true}
 //   strategy: {kind: mu_plus_lambda, mu: 10, lambda: 40, kappa: 3}
 //   budget: {generations: 30, evaluations: 2000, seconds: 600}
@@ -165,6 +166,7 @@ struct FitSpec {
   SourceRef joint_weights_where;
   double imu_weight = 0.0;        // weight of the torso IMU's roll/pitch errors (0: joints only)
   double window_s = 0.0;          // score only each log's first window_s seconds (0: whole logs)
+  bool absolute_error = false;    // fitness.error: absolute (Σ w|e|) instead of squared (Σ w e²)
   bool early_termination = true;  // stop rollouts that cannot beat the selection threshold
   StrategyConfig strategy;
   FitBudget budget;

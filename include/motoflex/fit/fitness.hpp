@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
@@ -34,6 +35,11 @@ struct FitnessOptions {
   // on the opening seconds is cheaper per evaluation in proportion; the strategy benchmark
   // uses it so that eighteen 810-evaluation runs fit in a sitting on 2 cores.
   double window_s = 0.0;
+  // How a frame's error enters the sum: squared, (q_real − q_sim)² (seed 001, default), or
+  // absolute, |q_real − q_sim| (BAM's loss: the mean absolute error). Real servo logs have
+  // stretches no model of the family reproduces (a stall whose hold angle sits on a knife
+  // edge); squared errors let those few stretches decide the whole fit, absolute ones do not.
+  bool absolute_error = false;
 };
 
 // One robot of a fit: a commanded motion, what the real robot measured, and how to simulate it.
@@ -52,8 +58,10 @@ struct FitCase {
 std::size_t first_scored_frame(const FitCase& fit_case, double settle_s);
 
 struct CaseScore {
-  double squared_error_rad2 = 0.0;  // Σ_t Σ_i w_i (q_real − q_sim)² (+ the IMU term), scored frames
-  std::size_t frames = 0;           // T: scored frames simulated before the end or a fall
+  // Σ_t Σ_i w_i (q_real − q_sim)² (+ the IMU term) over the scored frames; Σ w_i·|q_real − q_sim|
+  // (rad) with FitnessOptions::absolute_error.
+  double squared_error_rad2 = 0.0;
+  std::size_t frames = 0;  // T: scored frames simulated before the end or a fall
   std::size_t frames_requested = 0;
   double fitness = 0.0;  // squared_error / T^m (+inf for a failed rollout)
   RolloutEnd end = RolloutEnd::kCompleted;
@@ -98,6 +106,12 @@ class FitnessFunction {
   void measured_channels(std::size_t c, std::size_t frame, double* out) const;
   // "LHipRoll", ..., then "imu.roll", "imu.pitch".
   std::string channel_name(std::size_t channel) const;
+  // The residual of a channel whose measured − simulated value is `difference`: its square is
+  // the frame's term of the error sum (difference itself for squared errors; the signed root
+  // √(√w·|difference|) = √(w·|e|) for absolute ones), for a least-squares polish.
+  double channel_residual(std::size_t channel, double difference) const;
+  // A frame's error term before weighting: e² or |e| (FitnessOptions::absolute_error).
+  double frame_error(double e) const { return options_.absolute_error ? std::fabs(e) : e * e; }
 
  private:
   // Simulates and scores case c. The rollout stops early once finished_fitness (of the cases

@@ -14,7 +14,8 @@ namespace motoflex {
 //
 // CSV: a UTF-8 byte order mark, '#' comment lines and blank lines (anywhere) are ignored; the
 // first other line is the header. Our column names are `time_s`, `<joint>.cmd` (commanded
-// angle), `<joint>.meas` (measured angle), `imu.roll`, `imu.pitch`; joints are numbered in the
+// angle), `<joint>.meas` (measured angle), `imu.roll`, `imu.pitch`, `supply_v` (the servo supply
+// voltage the robot measured, V); joints are numbered in the
 // order their first column appears. Without a sidecar `columns:` map, time_s comes first. Each
 // following line is one frame of comma-separated fields (spaces around fields are allowed); time
 // must strictly increase (the spacing may vary: the physics interpolates the commands linearly
@@ -53,6 +54,9 @@ struct JointLog {
   std::vector<double> measured_rad;
   std::vector<double> imu_roll_rad;   // one per frame; empty when absent
   std::vector<double> imu_pitch_rad;  // one per frame; empty when absent
+  // The supply voltage the robot logged (V), one per frame; empty when absent. A servo law with
+  // a supply input (servo: bench) drives from it instead of the nominal bench.supply_v.
+  std::vector<double> supply_v;
   // The file's columns that are none of ours, in file order, and their fields as written
   // (frame-major [frame * extra_column_names.size() + column]). Not written back by
   // write_joint_log.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,29 @@ class CommandTrajectory {
   // forward in time costs O(1) per call.
   void sample(double t_s, double* out, std::size_t& hint) const;
 
+  // The supply voltage the robot logged with these commands (V, one per frame), smoothed by a
+  // centred moving average over kSupplySmoothing_s: the servo's register reads in 0.1 V steps,
+  // each read a few ms apart, while the voltage behind it moves with the motor current. Throws
+  // std::invalid_argument unless there is one finite positive value per frame.
+  void set_supply_v(const std::vector<double>& logged_v) {
+    set_smoothed_supply_v(smoothed_supply_v(time_s_, logged_v));
+  }
+  // Values already smoothed (e.g. over a whole log of which this is the first part).
+  void set_smoothed_supply_v(std::vector<double> supply_v);
+  // The centred moving average of logged_v (one per time) over kSupplySmoothing_s.
+  static std::vector<double> smoothed_supply_v(const std::vector<double>& time_s,
+                                               const std::vector<double>& logged_v);
+  bool has_supply() const { return !supply_v_.empty(); }
+  const std::vector<double>& supply_v() const { return supply_v_; }  // smoothed, per frame
+  // The smoothed supply at absolute time t_s (linear between frames, clamped at the ends); NaN
+  // without a logged supply. `hint` as for sample().
+  double supply_v_at(double t_s, std::size_t& hint) const;
+  static constexpr double kSupplySmoothing_s = 0.1;
+
  private:
   std::vector<double> time_s_;
   std::vector<double> angles_rad_;
+  std::vector<double> supply_v_;  // empty: no logged supply
   std::size_t joints_ = 0;
 };
 

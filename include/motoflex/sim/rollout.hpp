@@ -101,6 +101,9 @@ class Rollout {
   // (what the servos regulate to), `command_next_rad` the one at the end of the step (the ideal
   // servo's target). Returns false once the rollout has ended (fall or divergence).
   bool step(const double* command_now_rad, const double* command_next_rad);
+  // The supply voltage the robot logged at this time (V; NaN: none), read by the laws that
+  // have a supply input (ServoInput::logged_supply_v) from the next step on.
+  void set_logged_supply_v(double supply_v);
 
   double time_s() const { return time_s_; }
   RolloutEnd end() const { return end_; }

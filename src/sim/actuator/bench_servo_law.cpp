@@ -13,15 +13,20 @@ namespace {
 
 class BenchServoLaw final : public ServoLaw {
  public:
-  BenchServoLaw(BenchServoParams params, FrictionParams friction, double drift_per_s)
+  BenchServoLaw(BenchServoParams params, FrictionParams friction, double drift_per_s,
+                bool logged_supply)
       : params_(params),
         friction_(friction),
         resistance_drift_per_s_(drift_per_s),
+        logged_supply_(logged_supply),
         external_(friction_reads_external_torque(friction)) {}
 
   ServoOutput step(const ServoInput& in) override {
     BenchServoParams bench = params_;
     bench.resistance_ohm *= 1.0 + resistance_drift_per_s_ * in.elapsed_s;
+    // The supply the servo measured (a log's supply_v column) rather than the nominal one: a
+    // 7.4 V pack reads 6.3-9.2 V over one XL330 log as the current swings.
+    if (logged_supply_ && std::isfinite(in.logged_supply_v)) bench.supply_v = in.logged_supply_v;
     // A released H-bridge (BAM lift_and_drop): no drive and no back-EMF braking.
     const bool enabled = in.elapsed_s - in.settle_s < bench.torque_off_s;
     ServoOutput out;
@@ -38,13 +43,14 @@ class BenchServoLaw final : public ServoLaw {
   BenchServoParams params_;
   FrictionParams friction_;
   double resistance_drift_per_s_;
+  bool logged_supply_;
   bool external_;
 };
 
 const char* const kBenchNames[] = {
-    "bench.kp",          "bench.error_gain",  "bench.max_duty",       "bench.supply_v",
-    "bench.Kt_nm_per_a", "bench.R_ohm",       "bench.armature_kg_m2", "bench.mass_kg",
-    "bench.length_m",    "bench.torque_off_s"};
+    "bench.kp",          "bench.error_gain",   "bench.max_duty",       "bench.supply_v",
+    "bench.Kt_nm_per_a", "bench.R_ohm",        "bench.armature_kg_m2", "bench.mass_kg",
+    "bench.length_m",    "bench.torque_off_s", "bench.logged_supply"};
 
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   std::vector<std::string> out(std::begin(kBenchNames), std::end(kBenchNames));
@@ -77,7 +83,12 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   if (bench.max_duty < 0.0) throw ModelError("bench.max_duty must not be negative");
   const FrictionParams friction =
       read_friction(get, setup.model.actuators[setup.actuator].name, FrictionTerms::kFamily);
-  return std::make_unique<BenchServoLaw>(bench, friction, get("motor.R_drift_per_s"));
+  const double logged_supply = get("bench.logged_supply");
+  if (logged_supply != 0.0 && logged_supply != 1.0) {
+    throw ModelError("bench.logged_supply must be 0 (nominal bench.supply_v) or 1 (the log's)");
+  }
+  return std::make_unique<BenchServoLaw>(bench, friction, get("motor.R_drift_per_s"),
+                                         logged_supply == 1.0);
 }
 
 // The XL330 bench (scenarios/robots/servo_pendulum).
@@ -92,7 +103,9 @@ std::vector<ParameterDefault> defaults(const RobotModel&, std::size_t, const Joi
           {"bench.armature_kg_m2", 0.005, 1.0e-4, 0.05, xl330},
           {"bench.mass_kg", 0.49, 0.01, 5.0, xl330},
           {"bench.length_m", 0.1, 0.01, 0.5, xl330},
-          {"bench.torque_off_s", 1.0e9, 0.0, 1.0e9, xl330}};
+          {"bench.torque_off_s", 1.0e9, 0.0, 1.0e9, xl330},
+          // 1: drive from the log's supply_v column when it has one; 0: bench.supply_v always.
+          {"bench.logged_supply", 1.0, 0.0, 1.0, xl330}};
 }
 
 }  // namespace

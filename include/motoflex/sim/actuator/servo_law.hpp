@@ -41,6 +41,9 @@ struct ServoInput {
   // external torque τ_e of BAM's load-dependent friction (friction_family.hpp). Computed only
   // for a law whose needs_external_torque() is true; 0 otherwise.
   double external_torque_nm = 0.0;
+  // The supply voltage the robot logged at this time (V, smoothed: CommandTrajectory), NaN when
+  // the motion has none. A law with a supply input drives from it instead of its nominal supply.
+  double logged_supply_v = std::numeric_limits<double>::quiet_NaN();
 };
 
 // What a law applies to its joint during the step.
