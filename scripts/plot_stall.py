@@ -3,6 +3,7 @@
 loop's base fit and final fit simulate (their best/<log>.csv), with the tracking error below.
 
 Usage: plot_stall.py LOOP_DIR LOG_STEM --out PNG [--measured CSV]
+Prints the log's mean absolute error before and after the loop.
 LOG_STEM is the log's file stem in the fits' best/ folders (training logs) or best/validation/;
 the measured angle is read from --measured, or from LOOP_DIR/imported/.../<LOG_STEM>.csv.
 """
@@ -78,6 +79,12 @@ def main():
     fig.tight_layout()
     fig.savefig(args.out, dpi=110)
     print(args.out)
+    if measured:
+        # The log's mean absolute error (mrad) before and after, as the README quotes it.
+        for name, run in (("base fit", base), ("after the loop", final)):
+            errors = [abs(a - b) for a, b in zip(measured[joint], run[joint])]
+            print("%s: MAE %.1f mrad, max angle %.3f rad (measured %.3f)" % (
+                name, 1e3 * sum(errors) / len(errors), max(run[joint]), max(measured[joint])))
 
 
 if __name__ == "__main__":

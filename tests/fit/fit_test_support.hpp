@@ -74,6 +74,15 @@ inline std::string write_pendulum_fit(const std::filesystem::path& folder,
   return path;
 }
 
+// A 10-evaluation CMA-ES pendulum fit over `data` in `dir` with `fitness: <fitness>`, loaded.
+inline FitConfig pendulum_fitness_config(const std::filesystem::path& dir,
+                                         const std::filesystem::path& data,
+                                         const std::string& fitness) {
+  std::filesystem::create_directories(dir);
+  return load_fit_config(write_pendulum_fit(dir, data, "{kind: cma_es}", "{evaluations: 10}",
+                                            "fitness: " + fitness + "\n"));
+}
+
 inline std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

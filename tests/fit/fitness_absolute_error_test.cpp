@@ -18,12 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-FitConfig pendulum_config(const fs::path& dir, const fs::path& data, const std::string& fitness) {
-  fs::create_directories(dir);
-  return load_fit_config(write_pendulum_fit(dir, data, "{kind: cma_es}", "{evaluations: 10}",
-                                            "fitness: " + fitness + "\n"));
-}
-
 // Σ over the scored frames of |e| (absolute) or e² of the one pendulum joint.
 double error_sum_by_hand(const FitnessFunction& fitness, const RolloutResult& rollout,
                          bool absolute) {
@@ -39,9 +33,9 @@ double error_sum_by_hand(const FitnessFunction& fitness, const RolloutResult& ro
 TEST(FitnessAbsoluteError, SumsAbsoluteDifferences) {
   const fs::path dir = fresh_dir("fitness_absolute");
   record_pendulum_log(dir / "data", "sin_sin");
-  const FitConfig squared = pendulum_config(dir / "squared", dir / "data", "{m: 2}");
+  const FitConfig squared = pendulum_fitness_config(dir / "squared", dir / "data", "{m: 2}");
   const FitConfig absolute =
-      pendulum_config(dir / "absolute", dir / "data", "{m: 2, error: absolute}");
+      pendulum_fitness_config(dir / "absolute", dir / "data", "{m: 2, error: absolute}");
   // An off-truth point, so that every frame adds error.
   const ParameterSet point = absolute.space->apply(absolute.space->start());
   std::vector<RolloutResult> rollouts_a, rollouts_s;
@@ -72,7 +66,7 @@ TEST(FitnessAbsoluteError, SumsAbsoluteDifferences) {
   EXPECT_EQ(sq_summary.fit_error_rad, sq_summary.channel_rms_rad);
   EXPECT_NEAR(abs_summary.bic, 2.0 * n * std::log(by_hand_abs / n) + 3.0 * std::log(n), 1e-9 * n);
   EXPECT_NE(absolute.hash, squared.hash);
-  EXPECT_EQ(pendulum_config(dir / "explicit", dir / "data", "{m: 2, error: squared}").hash,
+  EXPECT_EQ(pendulum_fitness_config(dir / "explicit", dir / "data", "{m: 2, error: squared}").hash,
             squared.hash);
 }
 
@@ -80,7 +74,7 @@ TEST(FitnessAbsoluteError, BadValueNamesTheField) {
   const fs::path dir = fresh_dir("fitness_absolute_bad");
   record_pendulum_log(dir / "data", "sin_sin");
   try {
-    pendulum_config(dir, dir / "data", "{m: 2, error: l1}");
+    pendulum_fitness_config(dir, dir / "data", "{m: 2, error: l1}");
     FAIL() << "accepted error: l1";
   } catch (const InputError& error) {
     EXPECT_EQ(error.field(), "fitness.error");

@@ -13,12 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-FitConfig pendulum_config(const fs::path& dir, const fs::path& data, const std::string& fitness) {
-  fs::create_directories(dir);
-  return load_fit_config(write_pendulum_fit(dir, data, "{kind: cma_es}", "{evaluations: 10}",
-                                            "fitness: " + fitness + "\n"));
-}
-
 // Keeps the frames with t − t0 <= keep_s.
 void cut_log(const fs::path& from, const fs::path& to, double keep_s) {
   JointLog log = read_joint_log(from.string(), JointLogRequirements{});
@@ -44,10 +38,10 @@ TEST(FitnessWindow, EqualsAFitOnLogsCutByHand) {
   const double window_s = 1.5;
   cut_log(dir / "data" / "sin_sin.csv", dir / "cut" / "sin_sin.csv", window_s);
 
-  const FitConfig whole = pendulum_config(dir / "whole", dir / "data", "{m: 2}");
+  const FitConfig whole = pendulum_fitness_config(dir / "whole", dir / "data", "{m: 2}");
   const FitConfig windowed =
-      pendulum_config(dir / "windowed", dir / "data", "{m: 2, window_s: 1.5}");
-  const FitConfig cut = pendulum_config(dir / "cut_fit", dir / "cut", "{m: 2}");
+      pendulum_fitness_config(dir / "windowed", dir / "data", "{m: 2, window_s: 1.5}");
+  const FitConfig cut = pendulum_fitness_config(dir / "cut_fit", dir / "cut", "{m: 2}");
   const std::size_t whole_frames = whole.train->cases()[0].commands.frames();
   const std::size_t window_frames = windowed.train->cases()[0].commands.frames();
   ASSERT_EQ(window_frames, cut.train->cases()[0].commands.frames());
@@ -66,7 +60,8 @@ TEST(FitnessWindow, EqualsAFitOnLogsCutByHand) {
   EXPECT_EQ(a.cases[0].frames, b.cases[0].frames);
   EXPECT_LT(a.cases[0].frames, c.cases[0].frames);
   EXPECT_NE(windowed.hash, whole.hash);
-  EXPECT_EQ(pendulum_config(dir / "zero", dir / "data", "{m: 2, window_s: 0}").hash, whole.hash);
+  EXPECT_EQ(pendulum_fitness_config(dir / "zero", dir / "data", "{m: 2, window_s: 0}").hash,
+            whole.hash);
 }
 
 TEST(FitnessWindow, BadWindowsNameTheField) {
@@ -74,7 +69,7 @@ TEST(FitnessWindow, BadWindowsNameTheField) {
   record_pendulum_log(dir / "data", "sin_sin");
   for (const std::string fitness : {"{m: 2, window_s: -1}", "{m: 2, window_s: 0.001}"}) {
     try {
-      pendulum_config(dir, dir / "data", fitness);
+      pendulum_fitness_config(dir, dir / "data", fitness);
       FAIL() << "accepted " << fitness;
     } catch (const InputError& error) {
       EXPECT_EQ(error.field(), "fitness.window_s") << fitness;
