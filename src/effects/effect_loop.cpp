@@ -165,6 +165,7 @@ LoopRefit refit_with(const Evaluated& current, const RefitStart& candidate, cons
   config.loop = options;
   config.threads = current.fit.config.threads;
   refits.push_back(evaluate(ensure_fit(config)));
+  refits.back().fit.config.threads = config.threads;  // as for the base fit (run_loop)
   const Evaluated& refit = refits.back();
   account(result, refit.fit);
   LoopRefit row;
@@ -314,6 +315,9 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides, 
   std::printf("loop: base fit -> %s\n", base_overrides.out->c_str());
   std::fflush(stdout);
   Evaluated current = evaluate(ensure_fit(load_fit_config(fit_path, base_overrides)));
+  // A finished fit read back from its folder has the thread count it ran with; the ranking,
+  // discovery and refits of this run use this run's (--threads), which changes no number.
+  current.fit.config.threads = user.threads;
   result.base_run_dir = current.fit.config.out_dir;
   result.unreliable_reason =
       check_converged_for_ranking(current.fit, result.base_run_dir, force, "motoflex loop");
