@@ -44,10 +44,13 @@ struct TermDiscovery {
 };
 
 // Discovers at most `max_terms` terms for the fit `config` at `current` on its training logs.
-// Terms whose parameter the fit already frees are not candidates. Deterministic for any
-// thread count.
+// Terms whose parameter the fit already frees are not candidates. `screen` > 0 refines the
+// `screen` best supports by ΔBIC (each with a few Levenberg–Marquardt iterations on rollouts,
+// its coefficients and the fit's parameters together: support_refinement.hpp) before they are
+// compared, then by the ΔBIC of their training fitness; 0 keeps the first-order estimates.
+// Deterministic for any thread count.
 TermDiscovery discover_terms(const FitConfig& config, const ParameterSet& current, int threads,
-                             std::size_t max_terms);
+                             std::size_t max_terms, std::size_t screen = 0);
 
 // The effect that frees the discovered terms' coefficients (not in the library; its name is
 // "discovered_torque").

@@ -92,6 +92,10 @@ struct LoopOptions {
   // Discover in every iteration, the terms' refit competing with the library candidates on the
   // validation BIC (a library effect that only half-fits the residual is then not added first).
   bool discover_always = false;
+  // Supports (best linearised ΔBIC first) whose coefficients are refined on rollouts before
+  // they compete (term_discovery.hpp); 0 = first-order estimates only. Each costs up to
+  // 4·(free parameters + terms + 5) passes over the training logs.
+  std::size_t discover_screen = 0;
   StrategyConfig refit_strategy;  // the short warm-started refits
   FitBudget refit_budget;
   LoopOptions() {
