@@ -208,9 +208,9 @@ std::vector<DiscoveredTerm> discover_and_refit(std::size_t iteration, const fs::
                                                LoopIteration& step, LoopResult& result,
                                                std::vector<Evaluated>& refits) {
   const auto start = std::chrono::steady_clock::now();
-  const TermDiscovery discovery = discover_terms(
-      current.fit.config, current.fit.best, current.fit.config.threads, options.discover_terms,
-      options.discover_screen);
+  const TermDiscovery discovery =
+      discover_terms(current.fit.config, current.fit.best, current.fit.config.threads,
+                     options.discover_terms, options.discover_screen);
   result.probe_rollouts += discovery.probe_rollouts;
   step.discovery_explained = discovery.explained;
   step.discovery_delta_bic = discovery.delta_bic;

@@ -35,12 +35,12 @@ Linearisation linearise(const FitConfig& config, const ParameterSet& current,
     std::vector<double> moved = values;
     moved[j] = clamp_to(c, values[j] + step);
     steps[j] = moved[j] - values[j];
-    columns[j] = response(*config.train, with_coordinates(config, current, coordinates, moved),
-                          residual);
+    columns[j] =
+        response(*config.train, with_coordinates(config, current, coordinates, moved), residual);
   }
-  Linearisation out{Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n),
-                                          static_cast<Eigen::Index>(n)),
-                    Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n))};
+  Linearisation out{
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n)),
+      Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n))};
   std::vector<double> v(n);
   for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
     for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {

@@ -11,8 +11,8 @@
 #include <set>
 
 #include "linearised_residual.hpp"
-#include "support_refinement.hpp"
 #include "motoflex/model/torque_terms.hpp"
+#include "support_refinement.hpp"
 
 namespace motoflex {
 namespace {
@@ -320,7 +320,6 @@ double line_search(TermDiscovery& p, const FitConfig& config, const ParameterSet
   }
   return best;
 }
-
 
 // The coordinates of a proposal for refine_support: the fit's free parameters (at the
 // proposal's fit_start, or the fit's own values) and the proposal's term coefficients.
