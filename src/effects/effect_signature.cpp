@@ -96,28 +96,10 @@ Column on_every_channel(const std::vector<std::vector<double>>* field, std::size
 
 Eigen::VectorXd solve(const std::vector<Column>& columns, const Residual& residual, double* rss) {
   const std::size_t k = columns.size();
-  const std::size_t channels = residual.channels;
-  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(k, k);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k);
-  std::vector<double> value(k);
-  for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
-    for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {
-      for (std::size_t i = 0; i < channels; ++i) {
-        const std::size_t row = f * channels + i;
-        for (std::size_t a = 0; a < k; ++a) {
-          value[a] = columns[a].scale[i] * (*columns[a].field)[c][row];
-        }
-        for (std::size_t a = 0; a < k; ++a) {
-          if (value[a] == 0.0) continue;
-          rhs(a) += value[a] * residual.r_rad[c][row];
-          for (std::size_t b = a; b < k; ++b) normal(a, b) += value[a] * value[b];
-        }
-      }
-    }
-  }
-  for (std::size_t a = 0; a < k; ++a) {
-    for (std::size_t b = 0; b < a; ++b) normal(a, b) = normal(b, a);
-  }
+  auto [normal, rhs] = detail::normal_equations(
+      residual, k, [&columns](std::size_t a, std::size_t c, std::size_t row, std::size_t i) {
+        return columns[a].scale[i] * (*columns[a].field)[c][row];
+      });
   // A tiny ridge keeps collinear directions (e.g. K_t and the viscous term) solvable.
   const double ridge = 1e-9 * std::max(normal.diagonal().maxCoeff(), 1e-300);
   normal.diagonal().array() += ridge;

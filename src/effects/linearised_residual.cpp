@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace motoflex::detail {
@@ -85,6 +86,22 @@ std::vector<std::vector<double>> response(const FitnessFunction& fitness, const 
     }
   }
   return out;
+}
+
+Eigen::VectorXd standardised_solve(const Eigen::MatrixXd& gram, const Eigen::VectorXd& rhs,
+                                   double ridge, double* reduction) {
+  const Eigen::Index k = rhs.size();
+  Eigen::VectorXd scale(k), b(k);
+  Eigen::MatrixXd g(k, k);
+  for (Eigen::Index i = 0; i < k; ++i) scale(i) = std::sqrt(std::max(gram(i, i), 1e-300));
+  for (Eigen::Index i = 0; i < k; ++i) {
+    b(i) = rhs(i) / scale(i);
+    for (Eigen::Index j = 0; j < k; ++j) g(i, j) = gram(i, j) / (scale(i) * scale(j));
+  }
+  g.diagonal().array() += ridge;
+  const Eigen::VectorXd beta_std = g.ldlt().solve(b);
+  if (reduction != nullptr) *reduction = 2.0 * beta_std.dot(b) - beta_std.dot(g * beta_std);
+  return beta_std.cwiseQuotient(scale);
 }
 
 FitJacobian fit_jacobian(const FitConfig& config, const ParameterSet& current,

@@ -1,13 +1,11 @@
 #include "support_refinement.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
-#include <cmath>
 
 namespace motoflex::detail {
 namespace {
 
-constexpr double kInitialDamping = 1e-3;  // λ of (JᵀJ + λ·diag JᵀJ) δ = Jᵀr, standardised
+constexpr double kInitialDamping = 1e-3;  // λ of (JᵀJ + λ·diag JᵀJ) δ = Jᵀr (Marquardt's scaling)
 constexpr double kDampingFactor = 10.0;
 constexpr int kTriesPerIteration = 4;  // rejected steps raise λ before the refinement stops
 
@@ -15,71 +13,7 @@ double clamp_to(const RefinedCoordinate& c, double value) {
   return std::clamp(value, c.lower, c.upper);
 }
 
-// The Jacobian of the simulated channels at `values` (one probe per coordinate), as normal
-// equations against the residual there.
-struct Linearisation {
-  Eigen::MatrixXd gram;
-  Eigen::VectorXd rhs;
-};
-
-Linearisation linearise(const FitConfig& config, const ParameterSet& current,
-                        const std::vector<RefinedCoordinate>& coordinates,
-                        const std::vector<double>& values, const Residual& residual) {
-  const std::size_t n = coordinates.size();
-  std::vector<std::vector<std::vector<double>>> columns(n);
-  std::vector<double> steps(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    const RefinedCoordinate& c = coordinates[j];
-    double step = c.step;
-    if (values[j] + step > c.upper) step = -step;
-    std::vector<double> moved = values;
-    moved[j] = clamp_to(c, values[j] + step);
-    steps[j] = moved[j] - values[j];
-    columns[j] =
-        response(*config.train, with_coordinates(config, current, coordinates, moved), residual);
-  }
-  Linearisation out{
-      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n)),
-      Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n))};
-  std::vector<double> v(n);
-  for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
-    for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {
-      for (std::size_t i = 0; i < residual.channels; ++i) {
-        const std::size_t row = f * residual.channels + i;
-        for (std::size_t a = 0; a < n; ++a) {
-          v[a] = steps[a] != 0.0 ? columns[a][c][row] / steps[a] : 0.0;
-        }
-        for (std::size_t a = 0; a < n; ++a) {
-          const auto ia = static_cast<Eigen::Index>(a);
-          out.rhs(ia) += v[a] * residual.r_rad[c][row];
-          for (std::size_t b = 0; b < n; ++b) {
-            out.gram(ia, static_cast<Eigen::Index>(b)) += v[a] * v[b];
-          }
-        }
-      }
-    }
-  }
-  return out;
-}
-
-// The damped Gauss–Newton step in standardised coordinates (each column scaled to unit norm).
-Eigen::VectorXd damped_step(const Linearisation& l, double lambda) {
-  const Eigen::Index n = l.rhs.size();
-  Eigen::VectorXd scale(n);
-  for (Eigen::Index i = 0; i < n; ++i) scale(i) = std::sqrt(std::max(l.gram(i, i), 1e-300));
-  Eigen::MatrixXd g(n, n);
-  Eigen::VectorXd b(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    b(i) = l.rhs(i) / scale(i);
-    for (Eigen::Index j = 0; j < n; ++j) g(i, j) = l.gram(i, j) / (scale(i) * scale(j));
-  }
-  g.diagonal().array() += lambda + 1e-9;
-  const Eigen::VectorXd step_std = g.ldlt().solve(b);
-  return step_std.cwiseQuotient(scale);
-}
-
-}  // namespace
-
+// The parameter set of `current` with the coordinates at `values`.
 ParameterSet with_coordinates(const FitConfig& config, const ParameterSet& current,
                               const std::vector<RefinedCoordinate>& coordinates,
                               const std::vector<double>& values) {
@@ -93,6 +27,32 @@ ParameterSet with_coordinates(const FitConfig& config, const ParameterSet& curre
   return out;
 }
 
+// The Jacobian of the simulated channels at `values` (one probe per coordinate), as normal
+// equations against the residual there.
+NormalEquations linearise(const FitConfig& config, const ParameterSet& current,
+                          const std::vector<RefinedCoordinate>& coordinates,
+                          const std::vector<double>& values, const Residual& residual) {
+  const std::size_t n = coordinates.size();
+  std::vector<std::vector<std::vector<double>>> columns(n);
+  std::vector<double> steps(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const RefinedCoordinate& c = coordinates[j];
+    double step = c.step;
+    if (values[j] + step > c.upper) step = -step;
+    std::vector<double> moved = values;
+    moved[j] = clamp_to(c, values[j] + step);
+    steps[j] = moved[j] - values[j];
+    columns[j] =
+        response(*config.train, with_coordinates(config, current, coordinates, moved), residual);
+  }
+  return normal_equations(residual, n,
+                          [&](std::size_t a, std::size_t c, std::size_t row, std::size_t) {
+                            return steps[a] != 0.0 ? columns[a][c][row] / steps[a] : 0.0;
+                          });
+}
+
+}  // namespace
+
 RefinedSupport refine_support(const FitConfig& config, const ParameterSet& current,
                               const std::vector<RefinedCoordinate>& start, double start_fitness,
                               int iterations) {
@@ -104,11 +64,11 @@ RefinedSupport refine_support(const FitConfig& config, const ParameterSet& curre
   for (int it = 0; it < iterations; ++it) {
     const ParameterSet here = with_coordinates(config, current, start, out.values);
     const Residual residual = residual_of(*config.train, here);
-    const Linearisation l = linearise(config, current, start, out.values, residual);
+    const NormalEquations l = linearise(config, current, start, out.values, residual);
     out.rollouts += (start.size() + 1) * cases;
     bool accepted = false;
     for (int attempt = 0; attempt < kTriesPerIteration && !accepted; ++attempt) {
-      const Eigen::VectorXd delta = damped_step(l, lambda);
+      const Eigen::VectorXd delta = standardised_solve(l.gram, l.rhs, lambda + 1e-9);
       std::vector<double> trial = out.values;
       for (std::size_t j = 0; j < start.size(); ++j) {
         trial[j] = clamp_to(start[j], trial[j] + delta(static_cast<Eigen::Index>(j)));

@@ -41,9 +41,4 @@ RefinedSupport refine_support(const FitConfig& config, const ParameterSet& curre
                               const std::vector<RefinedCoordinate>& start, double start_fitness,
                               int iterations);
 
-// The parameter set of `current` with the coordinates at `values`.
-ParameterSet with_coordinates(const FitConfig& config, const ParameterSet& current,
-                              const std::vector<RefinedCoordinate>& coordinates,
-                              const std::vector<double>& values);
-
 }  // namespace motoflex::detail

@@ -64,28 +64,12 @@ struct ColumnSource {
 };
 
 Normal normal_equations(const ColumnSource& source, std::size_t columns, const Residual& residual) {
-  Normal out;
-  out.fit_columns = source.jacobian->columns.size();
-  out.gram = Eigen::MatrixXd::Zero(columns, columns);
-  out.rhs = Eigen::VectorXd::Zero(columns);
-  std::vector<double> v(columns);
-  for (std::size_t c = 0; c < residual.r_rad.size(); ++c) {
-    for (std::size_t f = residual.first_frame[c]; f < residual.end_frame[c]; ++f) {
-      for (std::size_t i = 0; i < residual.channels; ++i) {
-        const std::size_t row = f * residual.channels + i;
-        for (std::size_t a = 0; a < columns; ++a) v[a] = source.value(a, c, row, i);
-        for (std::size_t a = 0; a < columns; ++a) {
-          if (v[a] == 0.0) continue;
-          out.rhs(a) += v[a] * residual.r_rad[c][row];
-          for (std::size_t b = a; b < columns; ++b) out.gram(a, b) += v[a] * v[b];
-        }
-      }
-    }
-  }
-  for (std::size_t a = 0; a < columns; ++a) {
-    for (std::size_t b = 0; b < a; ++b) out.gram(a, b) = out.gram(b, a);
-  }
-  return out;
+  detail::NormalEquations ne = detail::normal_equations(
+      residual, columns,
+      [&source](std::size_t col, std::size_t c, std::size_t row, std::size_t channel) {
+        return source.value(col, c, row, channel);
+      });
+  return {std::move(ne.gram), std::move(ne.rhs), source.jacobian->columns.size()};
 }
 
 // Least squares on the fit columns plus the candidates in `active` (indices into candidates),
@@ -97,19 +81,20 @@ Eigen::VectorXd solve_subset(const Normal& n, const std::vector<std::size_t>& ac
   for (std::size_t a = 0; a < n.fit_columns; ++a) cols.push_back(a);
   for (const std::size_t a : active) cols.push_back(n.fit_columns + a);
   const Eigen::Index k = static_cast<Eigen::Index>(cols.size());
+  if (k == 0) {
+    *rss = rr;
+    return Eigen::VectorXd();
+  }
   Eigen::MatrixXd g(k, k);
-  Eigen::VectorXd b(k), scale(k);
+  Eigen::VectorXd b(k);
   for (Eigen::Index i = 0; i < k; ++i) {
-    scale(i) = std::sqrt(std::max(n.gram(cols[i], cols[i]), 1e-300));
+    b(i) = n.rhs(cols[i]);
+    for (Eigen::Index j = 0; j < k; ++j) g(i, j) = n.gram(cols[i], cols[j]);
   }
-  for (Eigen::Index i = 0; i < k; ++i) {
-    b(i) = n.rhs(cols[i]) / scale(i);
-    for (Eigen::Index j = 0; j < k; ++j) g(i, j) = n.gram(cols[i], cols[j]) / (scale(i) * scale(j));
-  }
-  g.diagonal().array() += kRidge;
-  const Eigen::VectorXd beta_std = k == 0 ? Eigen::VectorXd() : Eigen::VectorXd(g.ldlt().solve(b));
-  *rss = rr - (k == 0 ? 0.0 : 2.0 * beta_std.dot(b) - beta_std.dot(g * beta_std));
-  return beta_std.cwiseQuotient(scale);
+  double reduction = 0.0;
+  const Eigen::VectorXd beta = detail::standardised_solve(g, b, kRidge, &reduction);
+  *rss = rr - reduction;
+  return beta;
 }
 
 // Sequentially thresholded least squares from the full candidate set: drop the candidates
@@ -367,7 +352,6 @@ void adopt(TermDiscovery& p, const std::vector<detail::RefinedCoordinate>& coord
 struct Screened {
   TermDiscovery proposal;
   double fitness = 0.0;
-  double rss = 0.0;
 };
 
 }  // namespace
@@ -398,7 +382,7 @@ TermDiscovery discover_terms(const FitConfig& config, const ParameterSet& curren
     const double fitness = line_search(p, config, current, &rollouts);
     p.explained = (rss_base - std::clamp(s.rss, 0.0, rss_base)) / residual.rss;
     p.candidates = out.candidates;
-    screened.push_back({std::move(p), fitness, s.rss});
+    screened.push_back({std::move(p), fitness});
   }
   // The `screen` best supports by ΔBIC (all, if screen >= their number) refined on rollouts;
   // each support's refinement is serial, the supports run in parallel (deterministic).
