@@ -3,12 +3,13 @@
 M1-M6 (BAM's family, `joint.pendulum.friction_model`, the bench's voltage P servo), fitted with
 `motoflex fit` on the training split, the train and held-out MAE (mrad); then M1 with the
 Levenberg-Marquardt polish (what LM adds over CMA-ES alone: evaluations and error) and the
-`motoflex loop` result, on the XL330 (BAM's split: kp 400 validates, kp 100 and 800 train) and
-the STS3250 (lift_and_drop and sin_time_square train, up_and_down validates).
+`motoflex loop` result, on the XL330 (BAM's split: kp 400 validates, kp 100 and 800 train; and
+our own, xl330_traj: every gain trains, the sin_time_square logs validate) and the STS3250
+(lift_and_drop and sin_time_square train, up_and_down validates).
 
 Usage: report_real_servos.py [--binary build/motoflex] [--out runs/real_servos]
                              [--results benchmarks/real_servos] [--threads 2] [--scale 1.0]
-                             [--servos xl330,sts3250] [--models 1,2,3,4,5,6] [--no-loop]
+                             [--servos xl330,xl330_traj,sts3250] [--models 1,2,3,4,5,6] [--no-loop]
                              [--nao]   (also: nao_quick with and without LM)
 Writes RESULTS/real_servos.md and RESULTS/real_servos.json (git hash, date, budgets).
 """
@@ -54,16 +55,26 @@ MODELS = {
                         "load_friction_external_stribeck", "load_friction_quad_per_nm",
                         "load_friction_external_quad_per_nm"],
 }
+# The XL330 processed logs and the servo's own free parameters (from the config), without its
+# friction; each XL330 split adds its held-out rule.
+XL330 = {
+    "config": "servo_pendulum_bam.yaml",
+    "folder": ("xl330", "processed"),
+    "servo_free": ["bench.Kt_nm_per_a", "bench.R_ohm", "bench.armature_kg_m2"],
+}
 SERVOS = {
-    "xl330": {
-        "config": "servo_pendulum_bam.yaml",
-        "split": "BAM's: kp 400 validates, kp 100 and 800 train (processed logs)",
-        # the servo's own free parameters (from the config), without its friction
-        "servo_free": ["bench.Kt_nm_per_a", "bench.R_ohm", "bench.armature_kg_m2"],
-    },
+    "xl330": dict(XL330, split="BAM's: kp 400 validates, kp 100 and 800 train (processed logs)",
+                  held_out=lambda log: log.get("kp") == 400),
+    # Our own XL330 split: every gain trains (as in a fit on all the logs one has), one whole
+    # trajectory kind validates, so the held-out error measures a new motion, not a new gain.
+    "xl330_traj": dict(XL330, split="ours: the sin_time_square logs validate (kp 100 and 400), "
+                                    "the other 9 train (kp 100, 400, 800; processed logs)",
+                       held_out=lambda log: log.get("trajectory") == "sin_time_square"),
     "sts3250": {
         "config": "servo_pendulum_sts3250.yaml",
         "split": "lift_and_drop and sin_time_square train, up_and_down validates (raw logs)",
+        "folder": ("sts3250", "raw"),
+        "held_out": lambda log: log.get("trajectory") == "up_and_down",
         "servo_free": ["bench.error_gain", "bench.Kt_nm_per_a", "bench.R_ohm",
                        "bench.armature_kg_m2"],
     },
@@ -80,15 +91,13 @@ def split_logs(servo, out):
     for d in (train, val):
         shutil.rmtree(d, ignore_errors=True)
         os.makedirs(d)
-    folder = os.path.join(BAM, "xl330", "processed") if servo == "xl330" else \
-        os.path.join(BAM, "sts3250", "raw")
+    folder = os.path.join(BAM, *SERVOS[servo]["folder"])
     for name in sorted(os.listdir(folder)):
         if not name.endswith(".json"):
             continue
         with open(os.path.join(folder, name)) as f:
             log = json.load(f)
-        held_out = log.get("kp") == 400 if servo == "xl330" else \
-            log.get("trajectory") == "up_and_down"
+        held_out = SERVOS[servo]["held_out"](log)
         shutil.copy(os.path.join(folder, name), val if held_out else train)
     return train, val
 
@@ -283,6 +292,8 @@ def merged_rows(path, rows, nao):
     fresh = {row_key(r): r for r in rows}
     merged = [fresh.pop(row_key(r), r) for r in stored["rows"]]
     merged += list(fresh.values())
+    order = list(SERVOS)  # a new split's rows beside its servo's, not after every other servo
+    merged.sort(key=lambda r: order.index(r["servo"]) if r["servo"] in order else len(order))
     return merged, nao or stored.get("nao", [])
 
 
@@ -293,7 +304,7 @@ def main():
     parser.add_argument("--results", default=os.path.join(ROOT, "benchmarks", "real_servos"))
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--scale", type=float, default=1.0, help="multiplies every fit budget")
-    parser.add_argument("--servos", default="xl330,sts3250")
+    parser.add_argument("--servos", default="xl330,xl330_traj,sts3250")
     parser.add_argument("--models", default="1,2,3,4,5,6")
     parser.add_argument("--no-loop", action="store_true")
     parser.add_argument("--no-lm", action="store_true", help="skip the M1 + LM rows")
