@@ -208,6 +208,11 @@ std::vector<DiscoveredTerm> discover_and_refit(std::size_t iteration, const fs::
                                                LoopIteration& step, LoopResult& result,
                                                std::vector<Evaluated>& refits) {
   const auto start = std::chrono::steady_clock::now();
+  // Its probe rollouts (one set of the training logs per free parameter and per candidate term)
+  // take minutes on a walking robot: say it has started.
+  std::printf("loop: discovery: probing candidate torque terms on the residual (%d threads)\n",
+              current.fit.config.threads);
+  std::fflush(stdout);
   const TermDiscovery discovery =
       discover_terms(current.fit.config, current.fit.best, current.fit.config.threads,
                      options.discover_terms, options.discover_screen);
