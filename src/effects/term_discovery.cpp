@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -276,16 +277,26 @@ double proposal_fitness(const TermDiscovery& p, const FitConfig& config,
 // The proposal's step scaled by the best of kLineSearch (the linearised size of a term's
 // coefficient can be far off where the response is not linear), with the fit's parameters kept
 // or moved: `p` is updated to that step; returns its training fitness and counts the rollouts.
+// The trials run in parallel (each a rollout of every training log: minutes on a walking
+// robot) and are compared in a fixed order, so the choice does not depend on `threads`.
 double line_search(TermDiscovery& p, const FitConfig& config, const ParameterSet& current,
-                   std::size_t* rollouts) {
+                   int threads, std::size_t* rollouts) {
+  constexpr int kTrials = 2 * static_cast<int>(std::size(kLineSearch));  // × fit kept / moved
+  std::array<double, kTrials> fitness{};
+#pragma omp parallel for schedule(dynamic) num_threads(std::max(threads, 1))
+  for (int k = 0; k < kTrials; ++k) {
+    fitness[static_cast<std::size_t>(k)] =
+        proposal_fitness(p, config, current, k % 2 == 1, kLineSearch[k / 2]);
+  }
+  *rollouts += kTrials * config.train->cases().size();
   double best = std::numeric_limits<double>::infinity();
   double best_scale = 1.0;
   bool best_moved = false;
-  for (const double scale : kLineSearch) {
-    for (const bool moved : {false, true}) {
-      const double fitness = proposal_fitness(p, config, current, moved, scale);
-      *rollouts += config.train->cases().size();
-      if (fitness < best) best = fitness, best_scale = scale, best_moved = moved;
+  for (int k = 0; k < kTrials; ++k) {
+    if (fitness[static_cast<std::size_t>(k)] < best) {
+      best = fitness[static_cast<std::size_t>(k)];
+      best_scale = kLineSearch[k / 2];
+      best_moved = k % 2 == 1;
     }
   }
   for (auto& [name, value] : p.estimate) {
@@ -379,7 +390,7 @@ TermDiscovery discover_terms(const FitConfig& config, const ParameterSet& curren
   std::vector<Screened> screened;
   for (const Support& s : supports) {
     TermDiscovery p = proposal(s, candidates, n, jacobian, config);
-    const double fitness = line_search(p, config, current, &rollouts);
+    const double fitness = line_search(p, config, current, threads, &rollouts);
     p.explained = (rss_base - std::clamp(s.rss, 0.0, rss_base)) / residual.rss;
     p.candidates = out.candidates;
     screened.push_back({std::move(p), fitness});
