@@ -24,9 +24,12 @@ Writes OUT/fit_speed.md and OUT/fit_speed.json (default benchmarks/fit_speed/).
 """
 
 import argparse
+import concurrent.futures
 import fnmatch
 import json
 import os
+import random
+import shutil
 import statistics
 import subprocess
 import sys
@@ -85,19 +88,59 @@ def against_mujoco(binary, repeats, out):
     }
 
 
-def truth_fitness(binary, out, threads):
-    """F at the truth's values of nao_paper's free parameters: one evaluation (the free set is the
-    ideal servo's torque limit, which the motoflex law never reads; the truth is `fixed:`)."""
-    point = truth_point(FIT, TRUTH)
+def fitness_at(binary, out, threads, point, name):
+    """F at `point` (values of nao_paper's free parameters): one evaluation (the free set is the
+    ideal servo's torque limit, which the motoflex law never reads; the point is `fixed:`)."""
     config = derived_config(FIT, {"kind": "nlopt", "algorithm": "sbplx"}, 1, threads, 1)
     config["free"] = {"ideal.torque_max_nm": {"lower": 1.0, "upper": 100.0, "start": 20.0}}
     config["fixed"] = {**(config.get("fixed") or {}), **point}
-    path = out / "truth_fitness.yaml"
+    path = out / f"{name}.yaml"
     write_config(path, config)
-    run_dir = out / "runs" / "truth_fitness"
+    run_dir = out / "runs" / name
+    shutil.rmtree(run_dir, ignore_errors=True)  # a fit refuses a folder that holds one
     subprocess.run([binary, "fit", path, "--out", run_dir], check=True, stdout=subprocess.DEVNULL)
-    summary = json.loads((run_dir / "summary.json").read_text())
-    return summary["best_fitness"], point
+    return json.loads((run_dir / "summary.json").read_text())["best_fitness"]
+
+
+def truth_fitness(binary, out, threads):
+    point = truth_point(FIT, TRUTH)
+    return fitness_at(binary, out, threads, point, "truth_fitness"), point
+
+
+def perturbed_truths(point, count, scale, seed=1):
+    """`count` points near the truth: every free entry of nao_paper.yaml multiplied by
+    1 ± scale (random sign; a tied pattern such as joint.*Roll.friction_nm moves as one, an
+    `each: true` pattern per group), so each point stays in the fit's search space."""
+    free = yaml.safe_load(FIT.read_text())["free"]
+    rng = random.Random(seed)
+    points = []
+    for _ in range(count):
+        moved = dict(point)
+        for pattern, spec in free.items():
+            names = [n for n in point if n == pattern or fnmatch.fnmatchcase(n, pattern)]
+            groups = [[n] for n in names] if spec.get("each") else [names]
+            for group in groups:
+                factor = 1.0 + scale * rng.choice((-1.0, 1.0))
+                for n in group:
+                    moved[n] = point[n] * factor
+        points.append(moved)
+    return points
+
+
+def fitness_floor(binary, out, threads, point, f_truth, count, scale):
+    """How finely F resolves the truth: F at `count` points `scale` (relative) from it, each
+    parameter moved far less than any fit can locate it. A walking robot with contacts is
+    chaotic, so these values scatter around F(truth) instead of matching it; a target inside that
+    scatter is reached by chance, not by search."""
+    points = perturbed_truths(point, count, scale)
+    with concurrent.futures.ThreadPoolExecutor(max(1, threads)) as pool:
+        values = list(pool.map(lambda ip: fitness_at(binary, out, 1, ip[1],
+                                                            f"floor/{scale:g}_{ip[0]}"),
+                               enumerate(points)))
+    ratios = sorted(v / f_truth for v in values)
+    return {"scale": scale, "count": count, "fitness": values,
+            "ratio_min": ratios[0], "ratio_median": statistics.median(ratios),
+            "ratio_max": ratios[-1]}
 
 
 def recovered(summary, point, within=0.05):
@@ -122,9 +165,12 @@ def recovered(summary, point, within=0.05):
     return rows
 
 
-def fit_paper(binary, out, threads, seconds, tolerance):
+def fit_paper(binary, out, threads, seconds, tolerance, floor_points, floor_scale):
     f_truth, point = truth_fitness(binary, out, threads)
     target = (1.0 + tolerance) * f_truth
+    floor = fitness_floor(binary, out, threads, point, f_truth, floor_points, floor_scale)
+    print(f"F(truth) {f_truth:.4g}; {floor_points} points {floor_scale:g} from it: "
+          f"{floor['ratio_min']:.3f}-{floor['ratio_max']:.3f} x F(truth)", flush=True)
     config = yaml.safe_load(FIT.read_text())
     for key in ("scenario", "data", "validation"):
         config[key] = str((FIT.parent / config[key]).resolve())
@@ -135,16 +181,22 @@ def fit_paper(binary, out, threads, seconds, tolerance):
     path = out / "nao_paper.yaml"
     write_config(path, config)
     run_dir = out / "runs" / "nao_paper"
+    shutil.rmtree(run_dir, ignore_errors=True)
     subprocess.run([binary, "fit", path, "--out", run_dir], check=True, stdout=subprocess.DEVNULL)
     summary = json.loads((run_dir / "summary.json").read_text())
     rows = read_generations(run_dir)
     reach = first_reach(rows, target)
+    floor_target = floor["ratio_max"] * f_truth
+    floor_reach = first_reach(rows, floor_target)
     saved = summary.get("early_termination", {})
     return {
         "truth_fitness": f_truth, "target": target, "tolerance": tolerance,
         "reached": reach is not None,
         "evaluations_to_target": reach["evaluations"] if reach else None,
         "seconds_to_target": reach["seconds"] if reach else None,
+        "floor": floor, "floor_target": floor_target,
+        "floor_reach": ({"evaluations": floor_reach["evaluations"],
+                         "seconds": floor_reach["seconds"]} if floor_reach else None),
         "best_fitness": summary["best_fitness"], "evaluations": summary["evaluations"],
         "seconds": summary.get("seconds"), "stop_reason": summary.get("stop_reason"),
         "converged": summary.get("converged"), "threads": threads,
@@ -177,6 +229,19 @@ def report_lines(result):
             f"| nao_paper: F(truth), target ×{1 + fit['tolerance']:g} | "
             f"{fit['truth_fitness']:.4g}, {fit['target']:.4g} |",
             f"| nao_paper on {fit['threads']} threads: to the target | {reach} |",
+        ]
+        floor = fit.get("floor")
+        if floor:
+            floor_reach = fit.get("floor_reach")
+            lines += [
+                f"| F at {floor['count']} points {floor['scale']:g} (relative) from the truth, "
+                f"× F(truth): min, median, max | {floor['ratio_min']:.3f}, "
+                f"{floor['ratio_median']:.3f}, {floor['ratio_max']:.3f} |",
+                f"| nao_paper: to that scatter's max ({fit['floor_target']:.4g}) | " +
+                (f"{floor_reach['evaluations']} evaluations, {floor_reach['seconds']:.0f} s"
+                 if floor_reach else "not reached") + " |",
+            ]
+        lines += [
             f"| nao_paper: final best, evaluations, stop | {fit['best_fitness']:.4g}, "
             f"{fit['evaluations']}, {fit['stop_reason']} |",
             f"| nao_paper: frames saved by racing | "
@@ -206,6 +271,10 @@ def main():
     parser.add_argument("--fit-seconds", type=float, default=0.0,
                         help="the fit's time budget (default: nao_paper.yaml's)")
     parser.add_argument("--tolerance", type=float, default=0.05)
+    parser.add_argument("--floor-points", type=int, default=8,
+                        help="points near the truth that measure how finely F resolves it")
+    parser.add_argument("--floor-scale", type=float, default=1e-4,
+                        help="their relative distance from the truth")
     parser.add_argument("--skip-fit", action="store_true")
     parser.add_argument("--report-only", action="store_true",
                         help="re-read OUT/fit_speed.json and the fit's run folder and rewrite the "
@@ -226,7 +295,7 @@ def main():
     print(f"against MuJoCo: {result['mujoco']}", flush=True)
     if not args.skip_fit:
         result["fit"] = fit_paper(args.binary, out, args.threads, args.fit_seconds,
-                                  args.tolerance)
+                                  args.tolerance, args.floor_points, args.floor_scale)
     lines = report_lines(result)
     write_report(str(out), "fit_speed", lines, result)
 

@@ -97,9 +97,14 @@ std::size_t CmaEs::next_batch_size() const {
   return should_stop() ? 0 : parameters_.lambda;
 }
 
+std::size_t CmaEs::ranked_head() const {
+  return std::min(parameters_.lambda, std::max(parameters_.mu, parameters_.lambda / 2 + 1));
+}
+
 std::size_t CmaEs::exact_ranks_needed() const {
   const std::size_t lambda = next_batch_size();
-  if (!options_.racing || options_.active || lambda == 0) return lambda;
+  const bool every_rank = options_.active && !options_.pooled_negative_tail;
+  if (!options_.racing || every_rank || lambda == 0) return lambda;
   // tol_fun compares the range of the whole generation (with the recent bests): unless the
   // recent bests alone already span tol_fun, so that this generation cannot make it fire,
   // every value must be exact.
@@ -110,7 +115,7 @@ std::size_t CmaEs::exact_ranks_needed() const {
     if (!(*high - *low >= options_.tol_fun)) return lambda;
   }
   // The recombination reads ranks 0..μ−1, the median history rank ⌊λ/2⌋.
-  return std::min(lambda, std::max(parameters_.mu, lambda / 2 + 1));
+  return ranked_head();
 }
 
 std::size_t CmaEs::tol_fun_history() const {
@@ -166,11 +171,22 @@ void CmaEs::update_distribution(const std::vector<std::size_t>& ranking) {
   const double weight_sum = p.weights.sum();
   covariance_ *= 1.0 + p.c1 * delta_h - p.c1 - p.cmu * weight_sum;
   covariance_.noalias() += p.c1 * path_c_ * path_c_.transpose();
-  for (std::size_t i = 0; i < p.lambda; ++i) {
-    double w = p.weights(static_cast<Eigen::Index>(i));
-    if (w == 0.0) continue;
-    if (w < 0.0) w *= nd / (inverse_sqrt_c_ * step(i)).squaredNorm();
-    covariance_.noalias() += (p.cmu * w) * step(i) * step(i).transpose();
+  // With a pooled tail the ranks from ranked_head() on share their mean weight, in sample order.
+  const bool pooled = options_.active && options_.pooled_negative_tail;
+  const std::size_t head = pooled ? ranked_head() : p.lambda;
+  const auto add = [&](double w, const auto& y) {
+    if (w == 0.0) return;
+    if (w < 0.0) w *= nd / (inverse_sqrt_c_ * y).squaredNorm();
+    covariance_.noalias() += (p.cmu * w) * y * y.transpose();
+  };
+  for (std::size_t i = 0; i < head; ++i) add(p.weights(static_cast<Eigen::Index>(i)), step(i));
+  if (head < p.lambda) {
+    const auto tail = static_cast<Eigen::Index>(p.lambda - head);
+    const double w = p.weights.tail(tail).mean();
+    std::vector<std::size_t> samples(ranking.begin() + static_cast<std::ptrdiff_t>(head),
+                                     ranking.end());
+    std::sort(samples.begin(), samples.end());
+    for (const std::size_t k : samples) add(w, pending_steps_.col(static_cast<Eigen::Index>(k)));
   }
 
   // Step size (eq. 44).

@@ -8,7 +8,7 @@
 namespace motoflex_es {
 
 nlohmann::json CmaEs::options_fingerprint() const {
-  return {
+  nlohmann::json fingerprint = {
       {"initial_sigma_relative", detail::double_to_json(options_.initial_sigma_relative)},
       {"population_size", options_.population_size},
       {"active", options_.active},
@@ -17,6 +17,9 @@ nlohmann::json CmaEs::options_fingerprint() const {
       {"eigen_interval", options_.eigen_interval},
       {"seed", options_.seed},
   };
+  // Only when set, so that checkpoints written before the option existed still resume.
+  if (options_.pooled_negative_tail) fingerprint["pooled_negative_tail"] = true;
+  return fingerprint;
 }
 
 nlohmann::json CmaEs::save_state() const {

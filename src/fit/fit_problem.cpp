@@ -146,6 +146,7 @@ std::unique_ptr<motoflex_es::Strategy> make_strategy(const FitConfig& config) {
     options.population_size = s.population;
     options.max_restarts = s.restarts;
     options.active = s.active;
+    options.pooled_negative_tail = s.pooled_negative_tail;
     options.seed = config.seed;
     check_options(options.is_valid(&why), why, config.path);
     return std::make_unique<motoflex_es::CmaEs>(bounds, options);

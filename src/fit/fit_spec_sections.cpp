@@ -22,7 +22,8 @@ FitBudget read_budget(const YamlValue& budget) {
 StrategyConfig read_strategy(const YamlValue& node) {
   node.require_keys_within({"kind", "mu", "lambda", "kappa", "rho", "object_recombination",
                             "step_recombination", "initial_step", "sigma", "population", "restarts",
-                            "active", "algorithm", "polish", "polish_evaluations"});
+                            "active", "negative_weights", "algorithm", "polish",
+                            "polish_evaluations"});
   StrategyConfig s;
   s.kind = node.get_string("kind", s.kind);
   if (s.kind != "mu_plus_lambda" && s.kind != "cma_es" && s.kind != "nlopt") {
@@ -52,6 +53,11 @@ StrategyConfig read_strategy(const YamlValue& node) {
   s.population = positive("population", 0);
   s.restarts = positive("restarts", static_cast<int>(s.restarts));
   s.active = node.get_bool("active", s.active);
+  if (const auto v = node.find("negative_weights")) {
+    const std::string text = v->as_string();
+    if (text != "ranked" && text != "pooled") v->fail("expected ranked or pooled");
+    s.pooled_negative_tail = text == "pooled";
+  }
   s.algorithm = node.get_string("algorithm", s.algorithm);
   for (const char* key : {"algorithm", "polish"}) {
     if (const auto v = node.find(key)) {

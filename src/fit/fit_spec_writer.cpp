@@ -58,6 +58,7 @@ nlohmann::ordered_json strategy_to_json(const StrategyConfig& s) {
                                 {"polish_evaluations", s.polish_evaluations}};
   // Written only when off, so the identity (and config hash) of every earlier run is unchanged.
   if (!s.active) out["active"] = false;
+  if (s.pooled_negative_tail) out["negative_weights"] = "pooled";
   return out;
 }
 

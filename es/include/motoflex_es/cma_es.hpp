@@ -24,9 +24,15 @@ struct CmaEsOptions {
   std::size_t population_size = 0;
   // Active covariance update: the worst λ−μ samples get negative weights (Hansen 2016, eq. 53).
   bool active = true;
-  // Racing (only without the active update, which ranks every sample): the driver evaluates
-  // the first max(μ, ⌊λ/2⌋+1) samples, then stops each other one as soon as it is worse than
-  // all of them (the median history reads rank ⌊λ/2⌋). Bit-identical to full evaluation.
+  // With the active update: the ranks from max(μ, ⌊λ/2⌋+1) on share one negative weight, the
+  // mean of their eq. 53 weights, and enter the covariance in the order they were sampled. Only
+  // which samples form that tail matters then, not their order within it, so the driver can race
+  // the tail (below). The update's total negative weight is unchanged; the tail's worst samples
+  // push C a little less and its best ones a little more than with their own ranks.
+  bool pooled_negative_tail = false;
+  // Racing (without the active update, or with pooled_negative_tail): the driver evaluates the
+  // first max(μ, ⌊λ/2⌋+1) samples, then stops each other one as soon as it is worse than all of
+  // them (the median history reads rank ⌊λ/2⌋). Bit-identical to full evaluation.
   bool racing = true;
   // IPOP (Auger & Hansen 2005): when a run stops on a local criterion, start again with λ
   // multiplied by population_increase, up to max_restarts times. 0 = plain CMA-ES.
@@ -99,9 +105,9 @@ CmaParameters cma_parameters(std::size_t n, std::size_t lambda, bool active);
 // search invariant to the units of each parameter.
 // selection_threshold() is +inf. With the active update every rank of every sample enters the
 // covariance update, so no individual can be stopped early without changing the run; without
-// it (active = false) only the best max(μ, ⌊λ/2⌋+1) ranks matter, which exact_ranks_needed()
-// tells the driver (racing), unless this generation could end the run by tol_fun, which reads
-// the whole generation's range.
+// it (active = false), or with its tail pooled (pooled_negative_tail), only the best
+// max(μ, ⌊λ/2⌋+1) ranks matter, which exact_ranks_needed() tells the driver (racing), unless
+// this generation could end the run by tol_fun, which reads the whole generation's range.
 class CmaEs final : public Strategy {
  public:
   // Throws std::invalid_argument for invalid options or a bad start point.
@@ -112,6 +118,8 @@ class CmaEs final : public Strategy {
   void tell(const std::vector<double>& fitness) override;
   std::size_t next_batch_size() const override;
   std::size_t exact_ranks_needed() const override;
+  // The ranks whose order the update reads: max(μ, ⌊λ/2⌋+1) of λ.
+  std::size_t ranked_head() const;
   nlohmann::json save_state() const override;
   void load_state(const nlohmann::json& state) override;
 

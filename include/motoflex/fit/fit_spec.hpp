@@ -22,6 +22,7 @@
 //   window_s: 0,
 //             early_termination: true}
 //   strategy: {kind: mu_plus_lambda, mu: 10, lambda: 40, kappa: 3}
+//   (or {kind: cma_es, sigma: 0.2, active: true, negative_weights: ranked | pooled})
 //   budget: {generations: 30, evaluations: 2000, seconds: 600}
 //   threads: 2
 //   seed: 1
@@ -64,6 +65,9 @@ struct StrategyConfig {
   // The active covariance update (worst samples get negative weights). Off: the original rank-μ
   // update, which lets the driver race the worse half of each generation (bit-identical).
   bool active = true;
+  // `negative_weights: pooled` (default `ranked`): the active update's worse ranks, from
+  // max(μ, ⌊λ/2⌋+1) on, share one negative weight, so the driver can race them too.
+  bool pooled_negative_tail = false;
   // nlopt: bobyqa | sbplx | crs2_lm | isres | esch
   std::string algorithm = "bobyqa";
   // optional local polish of the best point after the main strategy (nlopt local algorithm)
