@@ -117,7 +117,7 @@ def perturbed_truths(point, count, scale, seed=1):
     for _ in range(count):
         moved = dict(point)
         for pattern, spec in free.items():
-            names = [n for n in point if n == pattern or fnmatch.fnmatchcase(n, pattern)]
+            names = [n for n in point if fnmatch.fnmatchcase(n, pattern)]
             groups = [[n] for n in names] if spec.get("each") else [names]
             for group in groups:
                 factor = 1.0 + scale * rng.choice((-1.0, 1.0))
@@ -152,7 +152,7 @@ def recovered(summary, point, within=0.05):
     unidentified |= set(summary.get("uncertainty", {}).get("unidentified", []))
     rows = []
     for name, value in summary.get("free", {}).items():
-        matches = [v for key, v in point.items() if key == name or fnmatch.fnmatchcase(key, name)]
+        matches = [v for key, v in point.items() if fnmatch.fnmatchcase(key, name)]
         if not matches:
             continue
         truth = matches[0]

@@ -103,7 +103,7 @@ std::size_t CmaEs::ranked_head() const {
 
 std::size_t CmaEs::exact_ranks_needed() const {
   const std::size_t lambda = next_batch_size();
-  const bool every_rank = options_.active && !options_.pooled_negative_tail;
+  const bool every_rank = options_.active && !pools_negative_tail();
   if (!options_.racing || every_rank || lambda == 0) return lambda;
   // tol_fun compares the range of the whole generation (with the recent bests): unless the
   // recent bests alone already span tol_fun, so that this generation cannot make it fire,
@@ -172,8 +172,7 @@ void CmaEs::update_distribution(const std::vector<std::size_t>& ranking) {
   covariance_ *= 1.0 + p.c1 * delta_h - p.c1 - p.cmu * weight_sum;
   covariance_.noalias() += p.c1 * path_c_ * path_c_.transpose();
   // With a pooled tail the ranks from ranked_head() on share their mean weight, in sample order.
-  const bool pooled = options_.active && options_.pooled_negative_tail;
-  const std::size_t head = pooled ? ranked_head() : p.lambda;
+  const std::size_t head = pools_negative_tail() ? ranked_head() : p.lambda;
   const auto add = [&](double w, const auto& y) {
     if (w == 0.0) return;
     if (w < 0.0) w *= nd / (inverse_sqrt_c_ * y).squaredNorm();

@@ -141,6 +141,8 @@ class CmaEs final : public Strategy {
   Eigen::VectorXd normalise(const std::vector<double>& x) const;
   std::vector<double> phenotype(const Eigen::VectorXd& u) const;
   void update_distribution(const std::vector<std::size_t>& ranking);
+  // Active update with the ranks from ranked_head() on sharing one weight.
+  bool pools_negative_tail() const { return options_.active && options_.pooled_negative_tail; }
   void update_eigensystem();
   // The local criterion that ends the current run, or kNone.
   StopReason run_stop_reason(const std::vector<double>& fitness,
