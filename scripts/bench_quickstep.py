@@ -11,8 +11,8 @@ speed of a fit with 1, 2 and 4 workers (threads and MPI ranks).
    GENERATIONS generations with each solver, on 1 thread, 2 threads, 2 MPI ranks and 4 MPI
    ranks (1 thread each; 4 ranks oversubscribe 2 cores): whether best.json's fitness and
    parameters are bit-identical to the 1-thread run, and the wall time of the fit loop.
-   QuickStep steps take turns under a lock in threads (ODE's random generator is process-wide),
-   so threads do not speed it up; MPI ranks do.
+   Each thread draws QuickStep's row order from its own copy of ODE's generator
+   (src/sim/ode_thread_random.cpp), so threads speed QuickStep up as they do the exact solver.
 
     scripts/bench_quickstep.py [--binary build/motoflex] [--out benchmarks/quickstep]
                                [--generations 2] [--no-mpi]

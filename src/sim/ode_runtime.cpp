@@ -3,6 +3,7 @@
 #include <ode/ode.h>
 
 #include <cstdarg>
+#include <cstdint>
 #include <cstdio>
 #include <mutex>
 #include <string>
@@ -49,8 +50,15 @@ void ensure_ode_ready() {
 namespace detail {
 
 int seeded_quick_step(dWorldID world, double dt_s, unsigned long& seed) {
+  if (ode_random_is_per_thread()) {
+    std::uint32_t& state = ode_thread_random_state();
+    state = static_cast<std::uint32_t>(seed);
+    const int ok = dWorldQuickStep(world, dt_s);
+    seed = state;
+    return ok;
+  }
   // The lock guards ODE's global random state, the one piece of process-wide mutable state the
-  // step touches; quick steps of parallel rollouts therefore take turns.
+  // step touches; quick steps of parallel rollouts then take turns.
   static std::mutex quick_step_mutex;
   const std::lock_guard<std::mutex> lock(quick_step_mutex);
   dRandSetSeed(seed);
