@@ -35,7 +35,9 @@ bool probe_thread_random() {
 
 }  // namespace
 
-std::uint32_t& ode_thread_random_state() { return thread_random_state; }
+std::uint32_t& ode_thread_random_state() {
+  return thread_random_state;
+}
 
 bool ode_random_is_per_thread() {
   static const bool per_thread = probe_thread_random();
