@@ -3,7 +3,8 @@
 
 1. Physics steps/s per core of the Nao's full MoToFlex pipeline (100 gear sub-steps, 2 flexible
    sub-bodies per thigh and tibia), exact (dWorldStep) and quick (dWorldQuickStep, seeded per
-   rollout), `motoflex bench`, REPEATS interleaved runs, medians.
+   rollout), `motoflex bench`, REPEATS interleaved runs, medians: one rollout on one thread, and
+   THREADS rollouts on THREADS threads (per core: the total over THREADS).
 2. motoflex against MuJoCo 2.2.2 on the same exported Nao and motion (the Nao walking on the
    ground with the full servo, the validation walk, 1 ms steps), `motoflex export --check-mujoco`:
    steps/s of both ODE solvers and of MuJoCo, ratios taken within each run.
@@ -53,14 +54,19 @@ def run_json(command):
     return json.loads(out.strip().splitlines()[-1])
 
 
-def steps_per_core(binary, repeats, seconds):
-    rates = {"step": [], "quick": []}
+def steps_per_core(binary, repeats, seconds, threads):
+    """Medians of steps/s per core: one rollout on one thread ("step", "quick"), and THREADS
+    rollouts on THREADS threads divided by THREADS ("step_parallel", "quick_parallel")."""
+    rates = {key: [] for key in ("step", "quick", "step_parallel", "quick_parallel")}
     for _ in range(repeats):
-        for solver in rates:
+        for solver in ("step", "quick"):
             line = run_json([binary, "bench", *PIPELINE, "--seconds", seconds, "--solver",
                              solver])
             rates[solver].append(line["steps_per_s"])
-    return {solver: statistics.median(values) for solver, values in rates.items()}
+            line = run_json([binary, "bench", *PIPELINE, "--seconds", seconds, "--solver",
+                             solver, "--rollouts", threads, "--threads", threads])
+            rates[solver + "_parallel"].append(line["steps_per_s"] / threads)
+    return {key: statistics.median(values) for key, values in rates.items()}
 
 
 def against_mujoco(binary, repeats, out):
@@ -216,10 +222,14 @@ def report_lines(result):
     speed, mujoco = result["steps_per_core"], result["mujoco"]
     lines = ["| measure | value |", "|---|---|",
              f"| Nao full pipeline, steps/s per core, exact | {speed['step']:.0f} |",
-             f"| Nao full pipeline, steps/s per core, quick | {speed['quick']:.0f} |",
-             f"| {mujoco['model']}: MuJoCo steps/s | {mujoco['mujoco_steps_per_s']:.0f} |",
-             f"| same: motoflex / MuJoCo, exact | {mujoco['exact_over_mujoco']:.2f} |",
-             f"| same: motoflex / MuJoCo, quick | {mujoco['quick_over_mujoco']:.2f} |"]
+             f"| Nao full pipeline, steps/s per core, quick | {speed['quick']:.0f} |"]
+    if "step_parallel" in speed:
+        threads = result["threads"]
+        lines.append(f"| same, {threads} rollouts on {threads} threads, per core: exact, quick | "
+                     f"{speed['step_parallel']:.0f}, {speed['quick_parallel']:.0f} |")
+    lines += [f"| {mujoco['model']}: MuJoCo steps/s | {mujoco['mujoco_steps_per_s']:.0f} |",
+              f"| same: motoflex / MuJoCo, exact | {mujoco['exact_over_mujoco']:.2f} |",
+              f"| same: motoflex / MuJoCo, quick | {mujoco['quick_over_mujoco']:.2f} |"]
     fit = result.get("fit")
     if fit:
         reach = (f"{fit['evaluations_to_target']} evaluations, {fit['seconds_to_target']:.0f} s"
@@ -289,7 +299,9 @@ def main():
         write_report(str(out), "fit_speed", report_lines(result), result)
         return
     (out / "runs").mkdir(parents=True, exist_ok=True)
-    result = {"steps_per_core": steps_per_core(args.binary, args.repeats, args.seconds)}
+    result = {"threads": args.threads,
+              "steps_per_core": steps_per_core(args.binary, args.repeats, args.seconds,
+                                               args.threads)}
     print(f"steps/s per core: {result['steps_per_core']}", flush=True)
     result["mujoco"] = against_mujoco(args.binary, args.repeats, out / "runs")
     print(f"against MuJoCo: {result['mujoco']}", flush=True)
