@@ -6,9 +6,10 @@
 // library's for every caller in the process (ELF symbol interposition): the same generator
 // (state' = 1664525 · state + 1013904223 mod 2^32, the drawn number is the new state), but on a
 // state each thread owns. seeded_quick_step() loads a rollout's state into it around each quick
-// step, so parallel quick rollouts neither share nor lock anything. Whether the replacement is
-// in effect is probed once (a program that loads libode in a way that binds it to its own dRand
-// keeps the process-wide lock, ode_runtime.cpp).
+// step (a world's step runs on the calling thread: each world has a self-threaded
+// implementation, rollout.cpp), so parallel quick rollouts neither share nor lock anything. Whether
+// the replacement is in effect is probed once (a program that loads libode in a way that binds it
+// to its own dRand keeps the process-wide lock, ode_runtime.cpp).
 
 #include <ode/ode.h>
 
