@@ -62,8 +62,11 @@ TEST(DeterminismTest, SameRolloutTwiceIsBitIdentical) {
   EXPECT_TRUE(bit_equal(first.torso_position_m, third.torso_position_m));
 }
 
-TEST(DeterminismTest, ParallelRolloutsEqualSerialOnes) {
-  const Scenario s = nao_scenario();
+// With either solver: QuickStep's row order comes from a generator each thread owns
+// (src/sim/ode_thread_random.cpp), so its parallel rollouts give their serial bits too.
+void expect_parallel_equal_to_serial(StepSolver solver, const std::string& what) {
+  Scenario s = nao_scenario();
+  s.rollout.solver = solver;
   std::vector<ParameterSet> params(4, s.parameters);
   const double resistances_ohm[] = {6.44, 5.0, 8.0, 12.0};
   for (std::size_t i = 0; i < params.size(); ++i) params[i].set("motor.R_ohm", resistances_ohm[i]);
@@ -77,11 +80,19 @@ TEST(DeterminismTest, ParallelRolloutsEqualSerialOnes) {
   const std::vector<RolloutResult> parallel = run_rollouts(jobs, 2);
   ASSERT_EQ(parallel.size(), serial.size());
   for (std::size_t i = 0; i < jobs.size(); ++i) {
-    ASSERT_EQ(serial[i].end, RolloutEnd::kCompleted) << i << ": " << serial[i].end_detail;
-    expect_bit_identical(serial[i], parallel[i], "job " + std::to_string(i));
+    ASSERT_EQ(serial[i].end, RolloutEnd::kCompleted) << what << i << ": " << serial[i].end_detail;
+    expect_bit_identical(serial[i], parallel[i], what + " job " + std::to_string(i));
   }
   // Different parameters do give different runs (the comparison above is not vacuous).
-  EXPECT_FALSE(bit_equal(serial[0].measured_rad, serial[3].measured_rad));
+  EXPECT_FALSE(bit_equal(serial[0].measured_rad, serial[3].measured_rad)) << what;
+}
+
+TEST(DeterminismTest, ParallelRolloutsEqualSerialOnes) {
+  expect_parallel_equal_to_serial(StepSolver::kStep, "step");
+}
+
+TEST(DeterminismTest, ParallelQuickStepRolloutsEqualSerialOnes) {
+  expect_parallel_equal_to_serial(StepSolver::kQuickStep, "quick");
 }
 
 }  // namespace
