@@ -57,15 +57,16 @@ def run_json(command):
 def steps_per_core(binary, repeats, seconds, threads):
     """Medians of steps/s per core: one rollout on one thread ("step", "quick"), and THREADS
     rollouts on THREADS threads divided by THREADS ("step_parallel", "quick_parallel")."""
+    def rate(solver, workers):
+        line = run_json([binary, "bench", *PIPELINE, "--seconds", seconds, "--solver", solver,
+                         "--rollouts", workers, "--threads", workers])
+        return line["steps_per_s"] / workers
+
     rates = {key: [] for key in ("step", "quick", "step_parallel", "quick_parallel")}
     for _ in range(repeats):
         for solver in ("step", "quick"):
-            line = run_json([binary, "bench", *PIPELINE, "--seconds", seconds, "--solver",
-                             solver])
-            rates[solver].append(line["steps_per_s"])
-            line = run_json([binary, "bench", *PIPELINE, "--seconds", seconds, "--solver",
-                             solver, "--rollouts", threads, "--threads", threads])
-            rates[solver + "_parallel"].append(line["steps_per_s"] / threads)
+            rates[solver].append(rate(solver, 1))
+            rates[solver + "_parallel"].append(rate(solver, threads))
     return {key: statistics.median(values) for key, values in rates.items()}
 
 
