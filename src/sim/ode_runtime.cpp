@@ -3,13 +3,11 @@
 #include <ode/ode.h>
 
 #include <cstdarg>
-#include <cstdint>
 #include <cstdio>
 #include <mutex>
 #include <string>
 
 #include "motoflex/core/error.hpp"
-#include "ode_quick_step.hpp"
 
 namespace motoflex {
 namespace {
@@ -47,25 +45,4 @@ void ensure_ode_ready() {
   }
 }
 
-namespace detail {
-
-int seeded_quick_step(dWorldID world, double dt_s, unsigned long& seed) {
-  if (ode_random_is_per_thread()) {
-    std::uint32_t& state = ode_thread_random_state();
-    state = static_cast<std::uint32_t>(seed);
-    const int ok = dWorldQuickStep(world, dt_s);
-    seed = state;
-    return ok;
-  }
-  // The lock guards ODE's global random state, the one piece of process-wide mutable state the
-  // step touches; quick steps of parallel rollouts then take turns.
-  static std::mutex quick_step_mutex;
-  const std::lock_guard<std::mutex> lock(quick_step_mutex);
-  dRandSetSeed(seed);
-  const int ok = dWorldQuickStep(world, dt_s);
-  seed = dRandGetSeed();
-  return ok;
-}
-
-}  // namespace detail
 }  // namespace motoflex

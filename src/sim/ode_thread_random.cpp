@@ -1,4 +1,4 @@
-// ODE's random generator, one per thread.
+// ODE's random generator, one per thread, and the quick step that seeds it per rollout.
 //
 // dWorldQuickStep reorders its constraint rows with dRandInt, which draws from dRand, ODE's
 // linear congruential generator on one process-global 32-bit state. libode calls dRand through
@@ -9,11 +9,12 @@
 // step (a world's step runs on the calling thread: each world has a self-threaded
 // implementation, rollout.cpp), so parallel quick rollouts neither share nor lock anything. Whether
 // the replacement is in effect is probed once (a program that loads libode in a way that binds it
-// to its own dRand keeps the process-wide lock, ode_runtime.cpp).
+// to its own dRand keeps a process-wide lock around libode's generator instead).
 
 #include <ode/ode.h>
 
 #include <cstdint>
+#include <mutex>
 
 #include "ode_quick_step.hpp"
 
@@ -45,11 +46,28 @@ bool ode_random_is_per_thread() {
   return per_thread;
 }
 
+int seeded_quick_step(dWorldID world, double dt_s, unsigned long& seed) {
+  if (ode_random_is_per_thread()) {
+    thread_random_state = static_cast<std::uint32_t>(seed);
+    const int ok = dWorldQuickStep(world, dt_s);
+    seed = thread_random_state;
+    return ok;
+  }
+  // The lock guards ODE's global random state, the one piece of process-wide mutable state the
+  // step touches; quick steps of parallel rollouts then take turns.
+  static std::mutex quick_step_mutex;
+  const std::lock_guard<std::mutex> lock(quick_step_mutex);
+  dRandSetSeed(seed);
+  const int ok = dWorldQuickStep(world, dt_s);
+  seed = dRandGetSeed();
+  return ok;
+}
+
 }  // namespace motoflex::detail
 
 // Replaces libode's dRand (declared in <ode/misc.h>); see the comment at the top.
 unsigned long dRand(void) {
-  std::uint32_t& state = motoflex::detail::ode_thread_random_state();
+  std::uint32_t& state = motoflex::detail::thread_random_state;
   state = 1664525u * state + 1013904223u;
   return state;
 }

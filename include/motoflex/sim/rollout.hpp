@@ -17,10 +17,10 @@ namespace motoflex {
 enum class StepSolver {
   kStep,       // dWorldStep: exact LCP (Dantzig); bit-reproducible whatever the thread count
   kQuickStep,  // dWorldQuickStep: iterative and faster. It shuffles constraint rows with ODE's
-               // process-global random generator; each rollout swaps in its own seed (0 at the
-               // start, like a fresh process) under a process-wide lock, so a quick rollout is
-               // reproducible whatever the threads, but quick steps of parallel rollouts do not
-               // overlap (src/sim/ode_runtime.cpp)
+               // random generator, which each thread owns a copy of; each rollout loads its own
+               // seed (0 at the start, like a fresh process) around every step, so a quick
+               // rollout is reproducible whatever the threads and parallel ones run side by
+               // side (src/sim/ode_thread_random.cpp)
 };
 
 // How the bending joints of flexible links (seed 001 §3.3) carry their spring.
