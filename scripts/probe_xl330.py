@@ -8,7 +8,9 @@ PWM register (what the firmware actually drove), which no fit reads.
 Rows: the config as it is; the nominal 7.4 V supply instead of the logged input_volts; a 5 ms
 physics step (BAM simulates and runs the P law at the log's 5 ms); BAM's q_offset (our
 encoder offset free); the error gain free; the driver's current limit free; CMA-ES with four
-IPOP restarts and a 6000-evaluation budget.
+IPOP restarts and a 6000-evaluation budget; and BAM's own simulation (5 ms step, nominal 7.4 V)
+with three seeds, whose fitted parameters are then run through an independent implementation of
+BAM's algorithm (bam_algorithm.py), log by log, to check that motoflex's bench is BAM's model.
 
 Usage: probe_xl330.py [--binary build/motoflex] [--out runs/probe_xl330]
                       [--results benchmarks/xl330_probes] [--jobs 2] [--rows base,supply,...]
@@ -26,6 +28,7 @@ from concurrent.futures import ThreadPoolExecutor
 import yaml  # python3-yaml (scripts/setup)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bam_algorithm  # noqa: E402  (BAM's Algorithm 1, written independently in numpy)
 import report_real_servos as real  # noqa: E402  (the split, the M3 config and the MAE)
 
 ROOT = real.ROOT
@@ -48,6 +51,13 @@ ROWS = {
     "restarts": ("CMA-ES with 4 IPOP restarts, 6000 evaluations",
                  {"restarts": 4, "evaluations": 6000}),
 }
+# BAM's simulation as bam.md §2b describes it (5 ms step, the P law held over it, the header's
+# nominal supply), one fit per seed: what a BAM refit of M3 reaches and how far seeds spread.
+BAM_SIMULATION = {"dt_s": 0.005, "fixed": {"bench.logged_supply": 0}}
+for _seed in (1, 2, 3):
+    ROWS["bam_algorithm_seed%d" % _seed] = (
+        "BAM's simulation (5 ms step, nominal 7.4 V), seed %d" % _seed,
+        dict(BAM_SIMULATION, seed=_seed))
 
 
 LAGS_MS = (-20, -10, -5, 0, 5, 10, 20)
@@ -120,6 +130,8 @@ def write_config(row, train, val, work):
         fit["free"][name] = {"lower": lower, "upper": upper, "start": start}
     if "restarts" in edits:
         fit["strategy"]["restarts"] = edits["restarts"]
+    if "seed" in edits:
+        fit["seed"] = edits["seed"]
     if "dt_s" in edits:
         with open(fit["scenario"]) as f:
             scenario = yaml.safe_load(f)
@@ -161,6 +173,45 @@ def run_row(binary, row, train, val, work):
     return result
 
 
+# best.json name -> bam_algorithm parameter
+BAM_NAMES = {"bench.Kt_nm_per_a": "kt_nm_per_a", "bench.R_ohm": "r_ohm",
+             "bench.armature_kg_m2": "armature_kg_m2", "joint.pendulum.friction_nm": "coulomb_nm",
+             "joint.pendulum.viscous_nm_s_per_rad": "viscous_nm_s_per_rad",
+             "joint.pendulum.load_friction": "load_friction"}
+
+
+def log_mae_mrad(real_csv, simulated_csv):
+    measured = real.read_column(real_csv, "pendulum.meas")
+    simulated = real.read_column(simulated_csv, "pendulum.meas")
+    n = min(len(measured), len(simulated))
+    return 1e3 * sum(abs(a - b) for a, b in zip(measured[:n], simulated[:n])) / n
+
+
+def cross_check(row, train, val, work):
+    """Per log, the MAE of motoflex's best rollout and of bam_algorithm.py at the same fitted
+    parameters (both BAM's simulation: 5 ms step, nominal supply)."""
+    out = os.path.join(work, row, "fit")
+    with open(os.path.join(out, "best.json")) as f:
+        best = json.load(f)["parameters"]
+    params = {ours: [best[name]] for name, ours in BAM_NAMES.items()}
+    logs = []
+    for split, folder in (("train", train), ("validation", val)):
+        for name in sorted(n for n in os.listdir(folder) if n.endswith(".json")):
+            logs.append((split, os.path.join(folder, name)))
+    data = bam_algorithm.load_logs([path for _, path in logs])
+    numpy_mrad = 1e3 * bam_algorithm.mae_rad(params, data)[0]
+    rows = []
+    for (split, path), log, theirs in zip(logs, data, numpy_mrad):
+        stem = os.path.splitext(os.path.basename(path))[0] + ".csv"
+        simulated = os.path.join(out, "best", *(["validation"] if split == "validation" else []),
+                                 stem)
+        ours = log_mae_mrad(os.path.join(out, "imported", split, stem), simulated)
+        rows.append({"log": stem[:-4], "trajectory": log["trajectory"], "kp": log["kp"],
+                     "split": split, "motoflex_mae_mrad": ours,
+                     "bam_algorithm_mae_mrad": float(theirs)})
+    return rows
+
+
 def markdown(results, pwm, git):
     lines = ["XL330, BAM's split (kp 100 and 800 train, kp 400 validates), model M3 (K_t, R, "
              "armature, Coulomb, viscous, load friction free from the config's starts), CMA-ES "
@@ -185,6 +236,20 @@ def markdown(results, pwm, git):
             "—" if p["pwm_over_predicted"] is None else "%.3f" % p["pwm_over_predicted"],
             p["saturated_share"] or 0.0, "—" if p["best_lag_ms"] is None else p["best_lag_ms"],
             "—" if not rms else "%.1f / %.1f" % (rms[0], rms[p["best_lag_ms"]])))
+    checked = [r for r in results if "cross_check" in r]
+    if checked:
+        lines += ["", "The bam_algorithm rows' fitted parameters run again through BAM's algorithm "
+                  "written independently (`scripts/bam_algorithm.py`, bam.md §2b-2d), log by log: "
+                  "MAE in mrad, motoflex / bam_algorithm.py:", "",
+                  "| log | trajectory | kp | split | " +
+                  " | ".join(r["row"] for r in checked) + " |",
+                  "|---|---|---|---|" + "---|" * len(checked)]
+        for i, log in enumerate(checked[0]["cross_check"]):
+            lines.append("| %s | %s | %d | %s | %s |" % (
+                log["log"], log["trajectory"], log["kp"], log["split"], " | ".join(
+                    "%.1f / %.1f" % (r["cross_check"][i]["motoflex_mae_mrad"],
+                                     r["cross_check"][i]["bam_algorithm_mae_mrad"])
+                    for r in checked)))
     return lines
 
 
@@ -207,6 +272,9 @@ def main():
     train, val = real.split_logs("xl330", args.out)
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:
         results = list(pool.map(lambda r: run_row(args.binary, r, train, val, args.out), rows))
+    for result in results:
+        if result["row"].startswith("bam_algorithm"):
+            result["cross_check"] = cross_check(result["row"], train, val, args.out)
     pwm = pwm_check()
     os.makedirs(args.results, exist_ok=True)
     document = {"git": real.git_hash(), "date": time.strftime("%Y-%m-%dT%H:%M:%S"),

@@ -125,7 +125,7 @@ CommandRunner add_simulate_command(CLI::App& app) {
       ->required();
   sub->add_option("--plot", args->plot, "also draw commanded vs simulated angles into this PNG");
   sub->add_option("--solver", args->solver,
-                  "step (exact, reproducible) or quick (faster; not reproducible in threads)");
+                  "step (exact) or quick (faster, less accurate); both reproducible in threads");
   sub->add_option("--duration", args->duration_s, "simulate only the first S seconds")
       ->check(positive_seconds());
   return [args] { return run(*args); };
