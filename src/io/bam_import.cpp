@@ -316,6 +316,7 @@ BamImport import_document(const json& doc, const std::string& shown,
     fields.fail("entries", "need at least 2 entries, found " + std::to_string(entries.size()));
   }
   const std::optional<double> dt_s = read_header(doc, fields, result, notes);
+  result.processed = dt_s.has_value();
   const std::optional<std::size_t> torque_off_entry = read_entries(entries, fields, dt_s, log);
   describe_sampling(dt_s, log, notes);
   if (log.supply_v.size() != log.time_s.size()) {
@@ -337,6 +338,34 @@ BamImport import_document(const json& doc, const std::string& shown,
   }
   log.meta.notes += ".";
   return result;
+}
+
+// What identifies one recording across BAM's raw and processed copies: the file name and the
+// header values the recorder wrote into both.
+std::string recording_key(const BamDirectoryItem& item) {
+  const BamImport& imported = *item.import;
+  const auto kp = imported.log.meta.parameters.find("bench.kp");
+  return fs::path(item.relative_path).filename().string() + "|" + imported.motor + "|" +
+         imported.log.meta.motion + "|" +
+         (kp == imported.log.meta.parameters.end() ? std::string() : number_text(kp->second));
+}
+
+// A raw log whose processed copy was also found is skipped (see import_bam_directory).
+void skip_raw_copies(std::vector<BamDirectoryItem>& items) {
+  std::map<std::string, std::string> processed;  // recording key → relative path
+  for (const BamDirectoryItem& item : items) {
+    if (item.import && item.import->processed) {
+      processed.emplace(recording_key(item), item.relative_path);
+    }
+  }
+  for (BamDirectoryItem& item : items) {
+    if (!item.import || item.import->processed) continue;
+    const auto copy = processed.find(recording_key(item));
+    if (copy == processed.end()) continue;
+    item.skip_reason = "the raw copy of " + copy->second +
+                       ", which is imported instead (BAM fits on the processed copy)";
+    item.import.reset();
+  }
 }
 
 }  // namespace
@@ -391,6 +420,7 @@ std::vector<BamDirectoryItem> import_bam_directory(const std::string& dir) {
     }
     items.push_back(std::move(item));
   }
+  skip_raw_copies(items);
   return items;
 }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
@@ -236,7 +237,18 @@ TEST_F(BamImportTest, RealFolderImportsEveryTrajectoryLogAndSkipsTheRest) {
       EXPECT_NE(item.skip_reason.find("calibration table"), std::string::npos);
     }
   }
-  EXPECT_EQ(imported, real_trajectory_logs().size());
+  // BAM keeps a session both raw and processed under the same file names: each recording once.
+  const std::vector<fs::path> logs = real_trajectory_logs();
+  std::size_t raw_copies = 0;
+  for (const fs::path& log : logs) {
+    const bool processed = json::parse(read_text(log)).contains("dt");
+    const bool has_processed_twin = std::any_of(logs.begin(), logs.end(), [&](const fs::path& p) {
+      return p != log && p.filename() == log.filename() && json::parse(read_text(p)).contains("dt");
+    });
+    if (!processed && has_processed_twin) ++raw_copies;
+  }
+  EXPECT_GT(raw_copies, 0u);
+  EXPECT_EQ(imported, logs.size() - raw_copies);
 }
 
 TEST_F(BamImportTest, RawLogKeepsItsClockAndGetsTheMeanRate) {
@@ -387,6 +399,31 @@ TEST_F(BamImportTest, FolderImportNamesOutputsAndSkipsWithReasons) {
   EXPECT_EQ(items[2].output_stem, "xl330_raw_a");
   ASSERT_TRUE(items[2].import);
   EXPECT_EQ(items[2].import->log.meta.origin, "imported from BAM xl330/raw/a.json");
+}
+
+TEST_F(BamImportTest, FolderImportTakesTheProcessedCopyOfARecordingOnly) {
+  json processed = small_log();
+  processed["dt"] = 0.005;
+  for (int i = 0; i < 4; ++i) processed["entries"][i]["timestamp"] = i * 0.005;
+  write("in/raw/a.json", small_log());
+  write("in/processed/a.json", processed);
+  write("in/raw/b.json", small_log());  // no processed copy
+  json other_gain = small_log();        // same file name, another recording (kp 800)
+  other_gain["kp"] = 800;
+  write("in/raw/c.json", other_gain);
+  write("in/processed/c.json", processed);
+  const std::vector<BamDirectoryItem> items = import_bam_directory(path("in"));
+  ASSERT_EQ(items.size(), 5u);
+  std::map<std::string, const BamDirectoryItem*> by_path;
+  for (const BamDirectoryItem& item : items) by_path[item.relative_path] = &item;
+  EXPECT_TRUE(by_path.at("processed/a.json")->import);
+  EXPECT_FALSE(by_path.at("raw/a.json")->import);
+  EXPECT_NE(by_path.at("raw/a.json")->skip_reason.find("raw copy of processed/a.json"),
+            std::string::npos)
+      << by_path.at("raw/a.json")->skip_reason;
+  EXPECT_TRUE(by_path.at("raw/b.json")->import);
+  EXPECT_TRUE(by_path.at("raw/c.json")->import);
+  EXPECT_TRUE(by_path.at("processed/c.json")->import);
 }
 
 TEST_F(BamImportTest, FolderImportFailsOnABrokenLogOrClashingNames) {

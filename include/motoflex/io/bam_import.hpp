@@ -32,7 +32,8 @@ struct BamImport {
   // e.g. lift_and_drop after 2 s); the samples after it are kept, their goal_position is what
   // the recorder logged but the servo no longer followed it. Empty when torque stays on.
   std::optional<double> torque_off_s;
-  std::string motor;  // the log's `motor` field, "" when absent
+  std::string motor;       // the log's `motor` field, "" when absent
+  bool processed = false;  // a processed file (resampled on a uniform `dt` grid by bam/process.py)
 };
 
 // Reads one BAM trajectory log. `display_path` is the name used in errors and in the sidecar's
@@ -63,9 +64,12 @@ struct BamDirectoryItem {
 std::string bam_output_stem(const std::string& relative_path);
 
 // Imports every BAM trajectory log below `dir` (recursively, in sorted path order) and lists
-// every other file with the reason it was skipped: files not ending in .json, and JSON files
+// every other file with the reason it was skipped: files not ending in .json, JSON files
 // that are not single-axis trajectory logs (no `entries` list, e.g. the mx64/mx106 calibration
-// tables or the free-pendulum friction log; 2R arm logs). Everything is imported before
+// tables or the free-pendulum friction log; 2R arm logs), and the raw copy of a recording whose
+// processed copy is also below `dir` (BAM keeps both under the same file name, e.g. raw/ and
+// processed/; same motor, kp and trajectory): the processed one is imported, as BAM fits on it,
+// so that no recording counts twice in a fit or a validation. Everything is imported before
 // anything is returned, so a bad trajectory log fails the whole call: a file that has
 // `entries` but is broken, or a .json file that is not valid JSON (it may be a truncated log),
 // throws InputError naming it as `dir`/relative path, as do `dir` not being a folder and two
