@@ -180,13 +180,6 @@ BAM_NAMES = {"bench.Kt_nm_per_a": "kt_nm_per_a", "bench.R_ohm": "r_ohm",
              "joint.pendulum.load_friction": "load_friction"}
 
 
-def log_mae_mrad(real_csv, simulated_csv):
-    measured = real.read_column(real_csv, "pendulum.meas")
-    simulated = real.read_column(simulated_csv, "pendulum.meas")
-    n = min(len(measured), len(simulated))
-    return 1e3 * sum(abs(a - b) for a, b in zip(measured[:n], simulated[:n])) / n
-
-
 def cross_check(row, train, val, work):
     """Per log, the MAE of motoflex's best rollout and of bam_algorithm.py at the same fitted
     parameters (both BAM's simulation: 5 ms step, nominal supply)."""
@@ -205,7 +198,8 @@ def cross_check(row, train, val, work):
         stem = os.path.splitext(os.path.basename(path))[0] + ".csv"
         simulated = os.path.join(out, "best", *(["validation"] if split == "validation" else []),
                                  stem)
-        ours = log_mae_mrad(os.path.join(out, "imported", split, stem), simulated)
+        total, count = real.absolute_errors(os.path.join(out, "imported", split, stem), simulated)
+        ours = 1e3 * total / count
         rows.append({"log": stem[:-4], "trajectory": log["trajectory"], "kp": log["kp"],
                      "split": split, "motoflex_mae_mrad": ours,
                      "bam_algorithm_mae_mrad": float(theirs)})

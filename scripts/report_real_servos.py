@@ -114,16 +114,23 @@ def read_column(path, column):
     return [float(r[index]) for r in rows[1:]]
 
 
+def absolute_errors(measured_csv, simulated_csv):
+    """Sum of |q_real - q_sim| [rad] over the frames both logs have, and their count."""
+    real = read_column(measured_csv, "pendulum.meas")
+    sim = read_column(simulated_csv, "pendulum.meas")
+    return sum(abs(a - b) for a, b in zip(real, sim)), min(len(real), len(sim))
+
+
 def mae_mrad(simulated_dir, measured_dir):
     """Mean |q_real - q_sim| over every frame of every log (the imported CSVs vs best/)."""
     total, count = 0.0, 0
     for name in sorted(os.listdir(measured_dir)):
         if not name.endswith(".csv"):
             continue
-        real = read_column(os.path.join(measured_dir, name), "pendulum.meas")
-        sim = read_column(os.path.join(simulated_dir, name), "pendulum.meas")
-        total += sum(abs(a - b) for a, b in zip(real, sim))
-        count += min(len(real), len(sim))
+        log_total, log_count = absolute_errors(os.path.join(measured_dir, name),
+                                               os.path.join(simulated_dir, name))
+        total += log_total
+        count += log_count
     return 1e3 * total / count
 
 

@@ -26,6 +26,7 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import bam_algorithm  # noqa: E402
+import report_real_servos  # noqa: E402  (its CSV column reader)
 
 BINARY = os.environ.get("MOTOFLEX_BINARY", os.path.join(ROOT, "build", "motoflex"))
 DT_S = 0.005
@@ -53,13 +54,6 @@ def write_log(path):
            "trajectory": "synthetic", "dt": DT_S, "entries": entries}
     with open(path, "w") as f:
         json.dump(log, f)
-
-
-def read_angles(path):
-    with open(path) as f:
-        rows = [line.rstrip("\n").split(",") for line in f if not line.startswith("#")]
-    column = rows[0].index("pendulum.meas")
-    return np.array([float(r[column]) for r in rows[1:]])
 
 
 class BenchMatchesBamAlgorithm(unittest.TestCase):
@@ -92,7 +86,7 @@ class BenchMatchesBamAlgorithm(unittest.TestCase):
         out = os.path.join(self.work.name, name + ".csv")
         subprocess.run([BINARY, "simulate", self.scenario, "--params", path, "--out", out],
                        check=True, stdout=subprocess.DEVNULL)
-        return read_angles(out)
+        return np.array(report_real_servos.read_column(out, "pendulum.meas"))
 
     def bam(self, params):
         logs = bam_algorithm.load_logs([self.json_log])
