@@ -5,11 +5,12 @@ M1-M6 (BAM's family, `joint.pendulum.friction_model`, the bench's voltage P serv
 Levenberg-Marquardt polish (what LM adds over CMA-ES alone: evaluations and error) and the
 `motoflex loop` result, on the XL330 (BAM's split: kp 400 validates, kp 100 and 800 train; and
 our own, xl330_traj: every gain trains, the sin_time_square logs validate) and the STS3250
-(lift_and_drop and sin_time_square train, up_and_down validates).
+(each of its three logs held out in turn: sts3250 holds out up_and_down, sts3250_lift
+lift_and_drop, sts3250_sin sin_time_square).
 
 Usage: report_real_servos.py [--binary build/motoflex] [--out runs/real_servos]
                              [--results benchmarks/real_servos] [--threads 2] [--scale 1.0]
-                             [--servos xl330,xl330_traj,sts3250] [--models 1,2,3,4,5,6] [--no-loop]
+                             [--servos xl330,xl330_traj,sts3250,...] [--models 1,2,3,4,5,6] [--no-loop]
                              [--nao]   (also: nao_quick with and without LM)
 Writes RESULTS/real_servos.md and RESULTS/real_servos.json (git hash, date, budgets).
 """
@@ -316,7 +317,7 @@ def main():
     parser.add_argument("--results", default=os.path.join(ROOT, "benchmarks", "real_servos"))
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--scale", type=float, default=1.0, help="multiplies every fit budget")
-    parser.add_argument("--servos", default="xl330,xl330_traj,sts3250")
+    parser.add_argument("--servos", default=",".join(SERVOS))
     parser.add_argument("--models", default="1,2,3,4,5,6")
     parser.add_argument("--no-loop", action="store_true")
     parser.add_argument("--no-lm", action="store_true", help="skip the M1 + LM rows")
