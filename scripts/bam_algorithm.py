@@ -20,6 +20,23 @@ G_M_S2 = 9.80665
 XL330_ERROR_GAIN = 0.0028774  # (4096/2pi)/(256*885), bam.md §2c
 
 
+# motoflex parameter name -> this module's (servo: bench, BAM's friction family)
+MOTOFLEX_NAMES = {"bench.Kt_nm_per_a": "kt_nm_per_a", "bench.R_ohm": "r_ohm",
+                  "bench.armature_kg_m2": "armature_kg_m2",
+                  "joint.pendulum.friction_nm": "coulomb_nm",
+                  "joint.pendulum.viscous_nm_s_per_rad": "viscous_nm_s_per_rad",
+                  "joint.pendulum.load_friction": "load_friction",
+                  "motor.current_limit_a": "current_limit_a"}
+
+
+def from_motoflex(parameters):
+    """One parameter set for simulate() from motoflex names (a best.json's parameters); names
+    this module does not model are left out. The load friction is M3's: pass it only from a
+    set with joint.pendulum.friction_model 3."""
+    return {ours: [parameters[name]] for name, ours in MOTOFLEX_NAMES.items()
+            if name in parameters}
+
+
 def load_logs(paths):
     """BAM processed logs (JSON): header and per-sample arrays, cut to the shortest log."""
     logs = []

@@ -173,20 +173,13 @@ def run_row(binary, row, train, val, work):
     return result
 
 
-# best.json name -> bam_algorithm parameter
-BAM_NAMES = {"bench.Kt_nm_per_a": "kt_nm_per_a", "bench.R_ohm": "r_ohm",
-             "bench.armature_kg_m2": "armature_kg_m2", "joint.pendulum.friction_nm": "coulomb_nm",
-             "joint.pendulum.viscous_nm_s_per_rad": "viscous_nm_s_per_rad",
-             "joint.pendulum.load_friction": "load_friction"}
-
-
 def cross_check(row, train, val, work):
     """Per log, the MAE of motoflex's best rollout and of bam_algorithm.py at the same fitted
     parameters (both BAM's simulation: 5 ms step, nominal supply)."""
     out = os.path.join(work, row, "fit")
     with open(os.path.join(out, "best.json")) as f:
         best = json.load(f)["parameters"]
-    params = {ours: [best[name]] for name, ours in BAM_NAMES.items()}
+    params = bam_algorithm.from_motoflex(best)
     logs = []
     for split, folder in (("train", train), ("validation", val)):
         for name in sorted(n for n in os.listdir(folder) if n.endswith(".json")):

@@ -36,10 +36,6 @@ RELEASE_S = 2.0
 PARAMS = {"bench.Kt_nm_per_a": 0.34, "bench.R_ohm": 3.6, "bench.armature_kg_m2": 0.0014,
           "joint.pendulum.friction_nm": 0.01, "joint.pendulum.viscous_nm_s_per_rad": 0.004,
           "joint.pendulum.load_friction": 0.25, "joint.pendulum.friction_model": 3}
-OURS = {"bench.Kt_nm_per_a": "kt_nm_per_a", "bench.R_ohm": "r_ohm",
-        "bench.armature_kg_m2": "armature_kg_m2", "joint.pendulum.friction_nm": "coulomb_nm",
-        "joint.pendulum.viscous_nm_s_per_rad": "viscous_nm_s_per_rad",
-        "joint.pendulum.load_friction": "load_friction", "motor.current_limit_a": "current_limit_a"}
 
 
 def goal_rad(t_s):
@@ -90,8 +86,8 @@ class BenchMatchesBamAlgorithm(unittest.TestCase):
 
     def bam(self, params):
         logs = bam_algorithm.load_logs([self.json_log])
-        ours = {OURS[k]: [v] for k, v in params.items() if k in OURS}
-        return bam_algorithm.simulate(ours, logs, half_step_term=False)[0, 0]
+        return bam_algorithm.simulate(bam_algorithm.from_motoflex(params), logs,
+                                      half_step_term=False)[0, 0]
 
     def check(self, params, name):
         ours, theirs = self.motoflex(params, name), self.bam(params)
