@@ -22,12 +22,23 @@ bool has_extension(const fs::path& folder, const char* extension) {
   return false;
 }
 
-// A folder of BAM JSON logs (and no *.csv) is imported into `import_dir`; anything else is
-// listed as it is.
+// Whether a *.json file lies anywhere below `folder` (BAM keeps a session in raw/ and
+// processed/ subfolders, so the folder a user names may hold only those).
+bool has_json_below(const fs::path& folder) {
+  std::error_code error;
+  for (auto it = fs::recursive_directory_iterator(folder, error);
+       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+    if (it->is_regular_file() && it->path().extension() == ".json") return true;
+  }
+  return false;
+}
+
+// A folder without *.csv logs but with BAM JSON logs in it or below it is imported into
+// `import_dir`; anything else is listed as it is.
 std::vector<std::string> logs_of_one(const std::string& folder_or_file, const std::string& field,
                                      const fs::path& import_dir) {
   if (fs::is_directory(folder_or_file) && !has_extension(folder_or_file, ".csv") &&
-      has_extension(folder_or_file, ".json")) {
+      has_json_below(folder_or_file)) {
     std::error_code error;
     fs::create_directories(import_dir, error);
     if (error) {

@@ -58,8 +58,9 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec);
 // The identity of a resolved config (see FitConfig::identity).
 nlohmann::json fit_identity(const FitConfig& config);
 
-// The logs of a list of sources: folders (every *.csv, sorted), files, and folders of BAM JSON
-// logs (imported into `import_dir` first).
+// The logs of a list of sources: folders (every *.csv, sorted), files, and folders without
+// *.csv that hold BAM JSON logs in them or in subfolders (imported into `import_dir` first, see
+// import_bam_directory: a recording kept raw and processed counts once).
 std::vector<std::string> logs_of(const std::vector<LogSource>& sources,
                                  const std::string& import_dir);
 

@@ -137,8 +137,8 @@ struct FreeParameterSpec {
   SourceRef where;
 };
 
-// A `data:` / `validation:` item: a folder of logs (every *.csv; a folder of BAM JSON logs is
-// imported into <out>/imported/), or one log file.
+// A `data:` / `validation:` item: a folder of logs (every *.csv; a folder of BAM JSON logs, in
+// it or in its subfolders, is imported into <out>/imported/), or one log file.
 struct LogSource {
   std::string path;
   SourceRef where;
