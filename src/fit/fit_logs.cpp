@@ -44,10 +44,17 @@ std::vector<std::string> logs_of_one(const std::string& folder_or_file, const st
     if (error) {
       throw InputError(import_dir.string(), 0, field, "cannot create: " + error.message());
     }
+    std::size_t imported = 0;
     for (const BamDirectoryItem& item : import_bam_directory(folder_or_file)) {
       if (!item.import) continue;
       const fs::path csv = import_dir / (item.output_stem + ".csv");
       write_joint_log(csv.string(), item.import->log);
+      ++imported;
+    }
+    if (imported == 0) {
+      throw InputError(folder_or_file, 0, field,
+                       "no *.csv logs in this folder, and none of the .json files below it is a "
+                       "BAM trajectory log (motoflex import-bam lists why)");
     }
     return list_logs(import_dir.string(), field);
   }

@@ -54,16 +54,22 @@ TEST(FitLogs, AFolderWithBamLogsInSubfoldersIsImportedOncePerRecording) {
   EXPECT_EQ(fs::path(logs[1]).filename(), "raw_b.csv");
 }
 
+// Neither logs nor, in the second folder, anything but a JSON file that is no trajectory log (a
+// run folder's summary, say): the error names the folder given, not the import folder.
 TEST(FitLogs, AFolderWithoutLogsNamesTheFolderAndTheField) {
   const fs::path dir = fresh_dir("fit_logs_empty");
   write(dir / "empty" / "sub" / "notes.txt", "nothing here\n");
-  try {
-    logs_of({{(dir / "empty").string(), SourceRef{"fit.yaml", 3, "data"}}},
-            (dir / "imported").string());
-    FAIL() << "no InputError";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), (dir / "empty").string());
-    EXPECT_EQ(e.field(), "data");
+  write(dir / "run" / "sub" / "summary.json", R"({"evaluations": 12})");
+  for (const char* folder : {"empty", "run"}) {
+    try {
+      logs_of({{(dir / folder).string(), SourceRef{"fit.yaml", 3, "data"}}},
+              (dir / "imported").string());
+      ADD_FAILURE() << "no InputError for " << folder;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), (dir / folder).string());
+      EXPECT_EQ(e.field(), "data");
+      EXPECT_NE(std::string(e.what()).find("no *.csv logs"), std::string::npos) << e.what();
+    }
   }
 }
 
