@@ -22,39 +22,28 @@ bool has_extension(const fs::path& folder, const char* extension) {
   return false;
 }
 
-// Whether a *.json file lies anywhere below `folder` (BAM keeps a session in raw/ and
-// processed/ subfolders, so the folder a user names may hold only those).
-bool has_json_below(const fs::path& folder) {
-  std::error_code error;
-  for (auto it = fs::recursive_directory_iterator(folder, error);
-       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-    if (it->is_regular_file() && it->path().extension() == ".json") return true;
-  }
-  return false;
-}
-
-// A folder without *.csv logs but with BAM JSON logs in it or below it is imported into
-// `import_dir`; anything else is listed as it is.
+// A folder without *.csv logs is searched for BAM JSON logs, in it and in its subfolders (BAM
+// keeps a session in raw/ and processed/), and they are imported into `import_dir`; anything
+// else is listed as it is.
 std::vector<std::string> logs_of_one(const std::string& folder_or_file, const std::string& field,
                                      const fs::path& import_dir) {
-  if (fs::is_directory(folder_or_file) && !has_extension(folder_or_file, ".csv") &&
-      has_json_below(folder_or_file)) {
+  if (fs::is_directory(folder_or_file) && !has_extension(folder_or_file, ".csv")) {
+    const std::vector<BamDirectoryItem> items = import_bam_directory(folder_or_file);
+    if (std::none_of(items.begin(), items.end(),
+                     [](const BamDirectoryItem& item) { return item.import.has_value(); })) {
+      throw InputError(folder_or_file, 0, field,
+                       "no *.csv logs in this folder, and no BAM trajectory log in it or below "
+                       "it (motoflex import-bam lists what it skipped)");
+    }
     std::error_code error;
     fs::create_directories(import_dir, error);
     if (error) {
       throw InputError(import_dir.string(), 0, field, "cannot create: " + error.message());
     }
-    std::size_t imported = 0;
-    for (const BamDirectoryItem& item : import_bam_directory(folder_or_file)) {
+    for (const BamDirectoryItem& item : items) {
       if (!item.import) continue;
       const fs::path csv = import_dir / (item.output_stem + ".csv");
       write_joint_log(csv.string(), item.import->log);
-      ++imported;
-    }
-    if (imported == 0) {
-      throw InputError(folder_or_file, 0, field,
-                       "no *.csv logs in this folder, and none of the .json files below it is a "
-                       "BAM trajectory log (motoflex import-bam lists why)");
     }
     return list_logs(import_dir.string(), field);
   }

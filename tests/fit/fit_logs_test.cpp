@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_test_support.hpp"
@@ -38,7 +37,7 @@ nlohmann::json bam_log(double dt_s) {
 
 void write(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
-  std::ofstream(path) << text;
+  write_text(path, text);
 }
 
 TEST(FitLogs, AFolderWithBamLogsInSubfoldersIsImportedOncePerRecording) {
