@@ -1,5 +1,6 @@
 #include "firmware_servo_law.hpp"
 
+#include <iterator>
 #include <stdexcept>
 
 #include "motoflex/core/error.hpp"
@@ -85,15 +86,8 @@ class FirmwareServoLaw final : public ServoLaw {
 
 std::vector<std::string> firmware_law_parameter_names(const RobotModel& model,
                                                       std::size_t actuator) {
-  const ActuatorSpec& spec = model.actuators[actuator];
-  const std::string prefix = servo_parameter_prefix(spec);
-  std::vector<std::string> out;
-  for (const char* leaf : kLeaves) out.push_back(prefix + leaf);
-  for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kFamily)) {
-    out.push_back(std::move(name));
-  }
-  out.push_back(armature_parameter_name(spec));
-  return out;
+  return scoped_law_parameter_names(model.actuators[actuator],
+                                    {std::begin(kLeaves), std::end(kLeaves)});
 }
 
 std::unique_ptr<ServoLaw> create_firmware_law(const ServoLawSetup& setup) {

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 
 #include "motoflex/core/error.hpp"
@@ -68,15 +69,8 @@ const char* const kLeaves[] = {"kp_nm_per_rad", "kd_nm_s_per_rad", "torque_max_n
                                "no_load_speed_rad_s"};
 
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
-  const ActuatorSpec& spec = model.actuators[actuator];
-  const std::string prefix = servo_parameter_prefix(spec);
-  std::vector<std::string> out;
-  for (const char* leaf : kLeaves) out.push_back(prefix + leaf);
-  for (auto& name : friction_parameter_names(spec.name, FrictionTerms::kFamily)) {
-    out.push_back(std::move(name));
-  }
-  out.push_back(armature_parameter_name(spec));
-  return out;
+  return scoped_law_parameter_names(model.actuators[actuator],
+                                    {std::begin(kLeaves), std::end(kLeaves)});
 }
 
 std::vector<ParameterSpec> defaults(const RobotModel& model, std::size_t actuator) {

@@ -80,6 +80,18 @@ std::string armature_parameter_name(const ActuatorSpec& actuator) {
   return joint_parameter(actuator, "armature", joint_units(actuator).inertia);
 }
 
+std::vector<std::string> scoped_law_parameter_names(const ActuatorSpec& actuator,
+                                                    const std::vector<std::string>& leaves) {
+  const std::string prefix = servo_parameter_prefix(actuator);
+  std::vector<std::string> out;
+  for (const std::string& leaf : leaves) out.push_back(prefix + leaf);
+  for (auto& name : friction_parameter_names(actuator.name, FrictionTerms::kFamily)) {
+    out.push_back(std::move(name));
+  }
+  out.push_back(armature_parameter_name(actuator));
+  return out;
+}
+
 double read_armature(const ParameterReader& get, const ActuatorSpec& actuator) {
   const std::string name = armature_parameter_name(actuator);
   const double armature = get(name);

@@ -68,6 +68,12 @@ std::vector<std::string> motoflex_pipeline_parameter_names(const ActuatorSpec& a
 std::string armature_parameter_name(const ActuatorSpec& actuator);
 double read_armature(const ParameterReader& get, const ActuatorSpec& actuator);
 
+// A firmware-style law's parameters for one actuator: servo.<scope>.<leaf> for each of its own
+// leaves, then BAM's friction family (FrictionTerms::kFamily) and the armature (the dynamixel,
+// feetech and pd_torque laws).
+std::vector<std::string> scoped_law_parameter_names(const ActuatorSpec& actuator,
+                                                    const std::vector<std::string>& leaves);
+
 // Joint friction (a budget for a zero-velocity ODE motor, BAM's M1–M6) is in
 // friction_family.hpp.
 
