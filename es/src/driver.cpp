@@ -11,6 +11,14 @@
 namespace motoflex_es {
 namespace {
 
+void check_dimensions(const char* caller, const Strategy& strategy, const Problem& problem) {
+  if (problem.dimension() != strategy.dimension()) {
+    throw std::invalid_argument(std::string(caller) + ": the problem has dimension " +
+                                std::to_string(problem.dimension()) + ", the strategy " +
+                                std::to_string(strategy.dimension()));
+  }
+}
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
@@ -158,11 +166,7 @@ std::string RunSummary::full_report() const {
 
 RunSummary run_optimisation(Strategy& strategy, Problem& problem, Evaluator& evaluator,
                             const Budget& budget, const RunCallbacks& callbacks) {
-  if (problem.dimension() != strategy.dimension()) {
-    throw std::invalid_argument("run_optimisation: the problem has dimension " +
-                                std::to_string(problem.dimension()) + ", the strategy " +
-                                std::to_string(strategy.dimension()));
-  }
+  check_dimensions("run_optimisation", strategy, problem);
   const Clock::time_point start = Clock::now();
   const std::uint64_t generations_before = strategy.generation();
   const std::uint64_t evaluations_before = strategy.evaluations();
@@ -221,6 +225,17 @@ RunSummary run_optimisation(Strategy& strategy, Problem& problem, Evaluator& eva
   summary.best_x = strategy.best_x();
   summary.seconds = seconds_since(start);
   return summary;
+}
+
+double evaluate_incumbent(Strategy& strategy, Problem& problem, Evaluator& evaluator,
+                          const std::vector<double>& x) {
+  check_dimensions("evaluate_incumbent", strategy, problem);
+  EvaluationContext context;
+  context.generation = strategy.generation();
+  std::vector<double> fitness;
+  evaluator.evaluate(problem, {x}, fitness, context);
+  strategy.record_incumbent(x, fitness.front());
+  return fitness.front();
 }
 
 }  // namespace motoflex_es

@@ -58,6 +58,15 @@ void Strategy::record_evaluation(const std::vector<double>& x, double fitness) {
   }
 }
 
+void Strategy::record_incumbent(const std::vector<double>& x, double fitness) {
+  if (x.size() != dimension() || !bounds_.contains(x)) {
+    throw std::invalid_argument("record_incumbent: the point has " + std::to_string(x.size()) +
+                                " coordinates for dimension " + std::to_string(dimension()) +
+                                " or lies outside the bounds");
+  }
+  record_evaluation(x, fitness);
+}
+
 void Strategy::stop(StopReason reason, std::string detail) {
   stop_reason_ = reason;
   stop_detail_ = std::move(detail);

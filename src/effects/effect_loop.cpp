@@ -86,20 +86,22 @@ std::string write_refit(const Evaluated& current, const RefitStart& candidate,
   const fs::path yaml = fs::path(dir) / "fit.yaml";
   if (fs::exists(yaml)) return yaml.string();
   const Effect& effect = *candidate.effect;
-  const auto training_fitness = [&](const nlohmann::json& free) {
+  const nlohmann::json& fitted = current.fit.best_json["free"];
+  const auto training_fitness = [&](const nlohmann::json& start) {
     const FitConfig config = load_fit_config(
-        write_refit_config(current.fit.config, free, effect, candidate.estimate, dir));
+        write_refit_config(current.fit.config, fitted, effect, candidate.estimate, dir, start));
     *start_rollouts += config.train->cases().size();
     return config.train->evaluate(config.space->apply(config.space->start())).fitness;
   };
-  nlohmann::json linearised = current.fit.best_json["free"];
+  nlohmann::json linearised = fitted;
   for (const auto& [name, value] : candidate.fit_start) linearised[name] = value;
   const double linearised_fitness = training_fitness(linearised);
   const double current_fitness =
       current.fit.summary.value("best_fitness", std::numeric_limits<double>::infinity());
   if (linearised_fitness <= current_fitness) return yaml.string();
-  if (training_fitness(current.fit.best_json["free"]) <= linearised_fitness) return yaml.string();
-  return write_refit_config(current.fit.config, linearised, effect, candidate.estimate, dir);
+  if (training_fitness(fitted) <= linearised_fitness) return yaml.string();
+  return write_refit_config(current.fit.config, fitted, effect, candidate.estimate, dir,
+                            linearised);
 }
 
 void account(LoopResult& result, const FinishedFit& fit) {

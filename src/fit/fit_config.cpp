@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -229,6 +230,36 @@ void load_fitness_functions(FitConfig& config) {
   }
 }
 
+// `incumbent` as a point of the search space: every free parameter once, within its bounds.
+std::vector<double> incumbent_coordinates(const FitSpec& spec, const ParameterSpace& space) {
+  if (spec.incumbent.empty()) return {};
+  const SourceRef& where = spec.incumbent_where.file.empty() ? spec.root : spec.incumbent_where;
+  std::map<std::string, double> values;
+  for (const auto& [name, value] : spec.incumbent) {
+    if (!values.emplace(name, value).second) throw error_at(where, "incumbent: " + name + " twice");
+  }
+  std::vector<double> x;
+  for (std::size_t i = 0; i < space.dimension(); ++i) {
+    const FreeParameter& p = space.free_parameters()[i];
+    const auto found = values.find(p.name);
+    if (found == values.end()) {
+      throw error_at(where, "incumbent: no value for the free parameter " + p.name +
+                                " (give every free parameter)");
+    }
+    if (!(found->second >= p.lower && found->second <= p.upper)) {
+      throw error_at(where, "incumbent: " + p.name + " = " + number_text(found->second) +
+                                " is outside its bounds [" + number_text(p.lower) + ", " +
+                                number_text(p.upper) + "]");
+    }
+    x.push_back(space.to_search(i, found->second));
+    values.erase(found);
+  }
+  if (!values.empty()) {
+    throw error_at(where, "incumbent: " + values.begin()->first + " is not a free parameter");
+  }
+  return x;
+}
+
 }  // namespace
 
 FitConfig resolve_fit_config(const FitSpec& spec) {
@@ -253,6 +284,7 @@ FitConfig resolve_fit_config(const FitSpec& spec) {
   add_effect_parameters(spec, effects, base, *config.scenario, config.free_parameters);
   config.fitness = fitness_options(spec, *config.scenario->model);
   config.space = std::make_shared<ParameterSpace>(config.free_parameters, base);
+  config.incumbent_x = incumbent_coordinates(spec, *config.space);
   load_fitness_functions(config);
 
   config.identity = fit_identity(config);

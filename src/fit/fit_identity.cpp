@@ -47,6 +47,7 @@ nlohmann::json fit_identity(const FitConfig& config) {
                           {"start", p.start}});
   }
   for (const auto& [name, value] : config.fixed) id["fixed"][name] = value;
+  for (const auto& [name, value] : config.incumbent) id["incumbent"][name] = value;
   if (!config.effects.empty()) id["effects"] = config.effects;
   id["flex_sub_bodies"] = config.scenario->model->structure.flex_sub_bodies;
   id["fitness"] = {{"m", config.fitness.m},

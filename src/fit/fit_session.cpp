@@ -181,6 +181,10 @@ void run_main_strategy(const FitConfig& config, motoflex_es::Strategy& strategy,
     s.report(event);
     return !s.should_stop();
   };
+  // The model a refit extends, before the search (a resumed run has it in its best already).
+  if (!config.incumbent_x.empty() && strategy.evaluations() == 0) {
+    motoflex_es::evaluate_incumbent(strategy, problem, evaluator, config.incumbent_x);
+  }
   const motoflex_es::RunSummary run =
       motoflex_es::run_optimisation(strategy, problem, evaluator, budget, callbacks);
   const bool interrupted = s.should_stop();

@@ -160,6 +160,14 @@ void read_sections(const YamlValue& root, FitSpec& spec, ErrorCollector& errors)
     if (const auto effects = root.find("effects")) read_effects(*effects, spec);
   });
   errors.check([&] {
+    if (const auto incumbent = root.find("incumbent")) {
+      spec.incumbent_where = where(*incumbent);
+      for (const auto& [name, value] : incumbent->entries()) {
+        spec.incumbent.emplace_back(name, value.as_double());
+      }
+    }
+  });
+  errors.check([&] {
     if (const auto fitness = root.find("fitness")) read_fitness(*fitness, spec);
   });
   errors.check([&] {
@@ -183,7 +191,7 @@ FitSpec load_fit_spec(const std::string& path, const FitOverrides& overrides) {
   const YamlValue root = YamlValue::load_file(path);
   root.require_keys_within({"name", "scenario", "data", "logs", "validation", "free", "fixed",
                             "effects", "fitness", "strategy", "budget", "threads", "seed", "out",
-                            "polish", "loop"});
+                            "polish", "loop", "incumbent"});
   FitSpec spec;
   spec.path = fs::absolute(path).lexically_normal();
   spec.root = {path, root.line(), ""};

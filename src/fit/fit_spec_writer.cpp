@@ -103,6 +103,11 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
     fit["fixed"] = fixed;
   }
   if (!spec.effects.empty()) fit["effects"] = spec.effects;
+  if (!spec.incumbent.empty()) {
+    nlohmann::ordered_json incumbent = nlohmann::ordered_json::object();
+    for (const auto& [name, value] : spec.incumbent) incumbent[name] = value;
+    fit["incumbent"] = incumbent;
+  }
   nlohmann::ordered_json fitness = {{"m", spec.fitness_m},
                                     {"settle_s", spec.fitness_settle_s},
                                     {"early_termination", spec.early_termination}};

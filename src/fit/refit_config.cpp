@@ -32,16 +32,20 @@ std::vector<LogSource> sources(const std::vector<std::string>& logs) {
 
 FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, const Effect& effect,
                    const std::vector<std::pair<std::string, double>>& effect_start,
-                   const std::string& dir) {
+                   const std::string& dir, const nlohmann::json& start_free) {
   FitSpec spec;
   spec.name = from.name + "+" + effect.name;
   spec.scenario_path = from.scenario_path;
   spec.train_data = sources(from.train_logs);
   spec.validation_data = sources(from.validation_logs);
   std::set<std::string> taken;
+  const auto value_in = [](const nlohmann::json& free, const FreeParameter& p, double fallback) {
+    return free.is_object() && free.contains(p.name) ? free[p.name].get<double>() : fallback;
+  };
   for (const FreeParameter& p : from.free_parameters) {
-    const double start = fitted_free.contains(p.name) ? fitted_free[p.name].get<double>() : p.start;
-    spec.free.push_back(free_spec(p, start));
+    const double fitted = value_in(fitted_free, p, p.start);
+    spec.free.push_back(free_spec(p, value_in(start_free, p, fitted)));
+    spec.incumbent.emplace_back(p.name, std::clamp(fitted, p.lower, p.upper));
     taken.insert(p.targets.begin(), p.targets.end());
   }
   spec.fixed = from.fixed;
@@ -52,6 +56,9 @@ FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, con
       if (name == p.targets.front()) start = value;
     }
     spec.free.push_back(free_spec(p, start));
+    // The current model has the effect at its neutral value (the nearest one the bounds allow).
+    spec.incumbent.emplace_back(
+        p.name, std::clamp(from.space->base().get(p.targets.front()), p.lower, p.upper));
   }
   spec.effects = from.effects;
   // An effect built on the fly (the loop's discovered terms) is not listed: its parameters are
@@ -81,8 +88,8 @@ FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, con
 std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitted_free,
                                const Effect& effect,
                                const std::vector<std::pair<std::string, double>>& effect_start,
-                               const std::string& dir) {
-  const FitSpec spec = refit_spec(from, fitted_free, effect, effect_start, dir);
+                               const std::string& dir, const nlohmann::json& start_free) {
+  const FitSpec spec = refit_spec(from, fitted_free, effect, effect_start, dir, start_free);
   fs::create_directories(dir);
   const std::string path = (fs::path(dir) / "fit.yaml").string();
   write_file_atomically(

@@ -11,6 +11,7 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/effects/effect_loop.hpp"
 #include "motoflex/fit/fit_run.hpp"
+#include "motoflex/fit/refit_config.hpp"
 #include "motoflex/model/effect_library.hpp"
 
 namespace motoflex::testing {
@@ -103,6 +104,39 @@ TEST(EffectConfig, TheLoopNeedsValidationLogsOfTheSameRobot) {
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("validation"), std::string::npos) << error.what();
   }
+}
+
+// A loop's refit has the model it extends (its fitted values, the new effect at its neutral value)
+// as its incumbent: evaluated before the search, so the refit can never end with a worse training
+// fitness than that model, even when the effect's own start (here a Stribeck peak at its upper
+// bound on logs without one) and a tiny search step keep every sample far worse.
+TEST(EffectConfig, ARefitNeverEndsWorseThanTheModelItExtends) {
+  const auto dir = fresh_dir("effect_config_incumbent");
+  const FitConfig base = load_fit_config(write_hidden_bench_fit(
+      dir, "none",
+      "{refit: {strategy: {kind: cma_es, sigma: 0.001, restarts: 0}, budget: {evaluations: 13}}}"));
+  nlohmann::json fitted = nlohmann::json::object();
+  for (const FreeParameter& p : base.free_parameters) fitted[p.name] = p.start;
+  const FitSpec spec = refit_spec(base, fitted, find_effect("stribeck"),
+                                  {{"joint.pendulum.stribeck_nm", 2.0}}, (dir / "refit").string());
+  ASSERT_EQ(spec.incumbent.size(), spec.free.size());
+  std::map<std::string, double> incumbent(spec.incumbent.begin(), spec.incumbent.end());
+  EXPECT_EQ(incumbent.at("joint.pendulum.stribeck_nm"), 0.0);
+  EXPECT_EQ(incumbent.at("bench.Kt_nm_per_a"), 0.5);
+
+  // As the loop runs it: written as fit.yaml and read back.
+  const FitConfig refit = load_fit_config(write_refit_config(base, fitted, find_effect("stribeck"),
+                                                             {{"joint.pendulum.stribeck_nm", 2.0}},
+                                                             (dir / "refit").string()));
+  ASSERT_EQ(refit.incumbent_x.size(), refit.space->dimension());
+  const double incumbent_fitness =
+      refit.train->evaluate(refit.space->apply(refit.incumbent_x)).fitness;
+  const double peak_fitness =
+      refit.train->evaluate(refit.space->apply(refit.space->start())).fitness;
+  ASSERT_GT(peak_fitness, 2.0 * incumbent_fitness);  // the search's own start is far worse
+  const FinishedFit done = ensure_fit(refit);
+  EXPECT_EQ(done.summary["best_fitness"].get<double>(), incumbent_fitness);
+  EXPECT_EQ(done.best_json["free"]["joint.pendulum.stribeck_nm"].get<double>(), 0.0);
 }
 
 }  // namespace

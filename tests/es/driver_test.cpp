@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "motoflex_es/cma_es.hpp"
 #include "motoflex_es/mu_plus_lambda.hpp"
 #include "test_problems.hpp"
 
@@ -105,6 +106,34 @@ TEST(EsDriverTest, ContextCarriesGenerationAndThreshold) {
       EXPECT_EQ(problem.contexts[g].stop_threshold, thresholds[g - 1]);
     }
   }
+}
+
+// A refit's incumbent (the model it extends) is evaluated once before the search: the run's best
+// can then not be worse than it, and the search itself goes on exactly as without it.
+TEST(EsDriverTest, IncumbentBoundsTheBestAndLeavesTheSearchAlone) {
+  BenchmarkProblem problem(Function::kSphere, 3);
+  CmaEsOptions options;
+  options.start_point = {4.0, 4.0, 4.0};
+  options.initial_sigma_relative = 0.01;
+  options.max_restarts = 0;
+  CmaEs with(problem.bounds(), options);
+  CmaEs without(problem.bounds(), options);
+  std::vector<double> optimum;
+  for (std::size_t i = 0; i < 3; ++i) optimum.push_back(testing::optimum_coordinate(i));
+  SerialEvaluator evaluator;
+  EXPECT_EQ(evaluate_incumbent(with, problem, evaluator, optimum), 0.0);
+  Budget budget;
+  budget.max_generations = 3;
+  const RunSummary a = run_optimisation(with, problem, evaluator, budget);
+  const RunSummary b = run_optimisation(without, problem, evaluator, budget);
+  // A small step far from the optimum never reaches it in three generations.
+  EXPECT_GT(b.best_fitness, 10.0);
+  EXPECT_EQ(a.best_fitness, 0.0);
+  EXPECT_EQ(a.best_x, optimum);
+  EXPECT_EQ(a.evaluations, b.evaluations + 1);
+  EXPECT_EQ(with.ask(), without.ask());
+  EXPECT_THROW(with.record_incumbent({0.0, 0.0}, 1.0), std::invalid_argument);
+  EXPECT_THROW(with.record_incumbent({0.0, 0.0, 9.0}, 1.0), std::invalid_argument);
 }
 
 TEST(EsDriverTest, DimensionMismatchIsAnError) {

@@ -87,4 +87,10 @@ struct RunSummary {
 RunSummary run_optimisation(Strategy& strategy, Problem& problem, Evaluator& evaluator,
                             const Budget& budget, const RunCallbacks& callbacks = {});
 
+// Evaluates x in full (never stopped early; context {generation = strategy.generation(),
+// first_individual = 0}) and hands it to Strategy::record_incumbent, so the run's best is never
+// worse than x. Returns its fitness. Call it before run_optimisation on a fresh strategy.
+double evaluate_incumbent(Strategy& strategy, Problem& problem, Evaluator& evaluator,
+                          const std::vector<double>& x);
+
 }  // namespace motoflex_es

@@ -94,6 +94,12 @@ class Strategy {
   const std::string& stop_detail() const { return stop_detail_; }
   bool should_stop() const { return stop_reason_ != StopReason::kNone; }
 
+  // A point evaluated outside the search (the model a refit extends, say): counted as one
+  // evaluation and kept as the best so far if it is, so the run never ends worse than it. It
+  // does not enter the search's own state (population, mean, covariance). Throws
+  // std::invalid_argument if x has the wrong size or lies outside the bounds.
+  void record_incumbent(const std::vector<double>& x, double fitness);
+
  protected:
   // Throws std::invalid_argument if the bounds are invalid.
   explicit Strategy(Bounds bounds);

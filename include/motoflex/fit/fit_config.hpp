@@ -27,6 +27,7 @@ struct FitConfig : FitSpec {
   std::shared_ptr<FitnessFunction> train;
   std::shared_ptr<FitnessFunction> validation;  // null without validation logs
   std::shared_ptr<ParameterSpace> space;
+  std::vector<double> incumbent_x;  // `incumbent` in search coordinates (empty: none)
 
   // What decides the result of the run: every spec field except threads, budget and out_dir,
   // with the contents of the scenario, robot and log files. Two configs with the same hash give

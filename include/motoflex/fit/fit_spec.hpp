@@ -165,9 +165,15 @@ struct FitSpec {
   std::vector<FreeParameterSpec> free;     // required: what the optimiser searches
   // Values on top of the robot's defaults and the scenario's `parameters`, in order.
   std::vector<std::pair<std::string, double>> fixed;
-  std::vector<SourceRef> fixed_where;           // parallel to `fixed`
-  std::vector<std::string> effects;             // library effects whose parameters go free
-  std::vector<SourceRef> effects_where;         // parallel to `effects`
+  std::vector<SourceRef> fixed_where;    // parallel to `fixed`
+  std::vector<std::string> effects;      // library effects whose parameters go free
+  std::vector<SourceRef> effects_where;  // parallel to `effects`
+  // The model this fit extends, as values of its free parameters (model units, by the names of
+  // `free`, every one of them): evaluated once before the search, so the result is never worse
+  // than it (the loop's refits: the current model with the new effect at its neutral value).
+  // Empty: none.
+  std::vector<std::pair<std::string, double>> incumbent;
+  SourceRef incumbent_where;
   double fitness_m = 2.0;                       // F = Σ error² / T^m (seed 001 eq. 2), m ≥ 0
   double fitness_settle_s = 0.0;                // unscored frames at each log's start
   std::map<std::string, double> joint_weights;  // joint → w_i ≥ 0 (absent: 1)

@@ -10,20 +10,22 @@
 
 namespace motoflex {
 
-// Writes `<dir>/fit.yaml`, the warm-started refit of `from` with `effect` added, and returns
-// its path. Every free parameter of `from` starts at its fitted value (`fitted_free`: free
-// parameter name → value, as in best.json's "free"); the effect's new parameters start at
-// `effect_start` (model parameter → value, e.g. the signature regression's estimate); strategy
-// and budget are from.loop's refit options; the logs are from's, by absolute path. The file is
-// a plain fit config (JSON, which YAML reads), so `motoflex fit`, `resume` and `residuals`
-// work on it as on any other.
+// The refit of `from` with `effect` added, as a fit spec whose run folder is `dir`. The current
+// model, `fitted_free` (free parameter name → value, as in best.json's "free"), is the refit's
+// `incumbent` with the effect at its neutral value: evaluated before the search, so a refit never
+// ends with a worse training fitness than the model it extends. The search starts at
+// `start_free` (default: `fitted_free`; the loop may move the fit's own parameters to the
+// signature regression's linearised optimum) with the effect's new parameters at
+// `effect_start` (model parameter → value, e.g. the regression's estimate). Strategy and budget
+// are from.loop's refit options; the logs are from's, by absolute path.
 FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, const Effect& effect,
                    const std::vector<std::pair<std::string, double>>& effect_start,
-                   const std::string& dir);
-// refit_spec written as `<dir>/fit.yaml`; returns its path.
+                   const std::string& dir, const nlohmann::json& start_free = nullptr);
+// refit_spec written as `<dir>/fit.yaml` (a plain fit config, JSON, which YAML reads, so
+// `motoflex fit`, `resume` and `residuals` work on it as on any other); returns its path.
 std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitted_free,
                                const Effect& effect,
                                const std::vector<std::pair<std::string, double>>& effect_start,
-                               const std::string& dir);
+                               const std::string& dir, const nlohmann::json& start_free = nullptr);
 
 }  // namespace motoflex
