@@ -120,7 +120,8 @@ LoopOptions read_loop(const YamlValue& node) {
     }
   }
   if (const auto refit = node.find("refit")) {
-    refit->require_keys_within({"strategy", "budget"});
+    refit->require_keys_within({"strategy", "budget", "polish"});
+    if (const auto polish = refit->find("polish")) loop.refit_polish = read_polish(*polish);
     if (const auto strategy = refit->find("strategy")) {
       loop.refit_strategy = read_strategy(*strategy);
     }

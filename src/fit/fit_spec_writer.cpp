@@ -131,6 +131,9 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
                  {"refit",
                   {{"strategy", strategy_to_json(spec.loop.refit_strategy)},
                    {"budget", budget_json(spec.loop.refit_budget)}}}};
+  if (!spec.loop.refit_polish.method.empty()) {
+    fit["loop"]["refit"]["polish"] = polish_to_json(spec.loop.refit_polish);
+  }
   fit["threads"] = spec.threads;
   fit["seed"] = spec.seed;
   fit["out"] = spec.out_dir;

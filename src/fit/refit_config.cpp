@@ -79,6 +79,7 @@ FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, con
   spec.early_termination = from.early_termination;
   spec.strategy = from.loop.refit_strategy;
   spec.budget = from.loop.refit_budget;
+  spec.polish = from.loop.refit_polish;
   spec.threads = from.threads;
   spec.seed = from.seed;
   spec.out_dir = fs::absolute(dir).lexically_normal().string();

@@ -139,5 +139,23 @@ TEST(EffectConfig, ARefitNeverEndsWorseThanTheModelItExtends) {
   EXPECT_EQ(done.best_json["free"]["joint.pendulum.stribeck_nm"].get<double>(), 0.0);
 }
 
+// `loop: {refit: {polish: ...}}` finishes every refit with it (written into the refit's fit.yaml,
+// so a resumed loop polishes the same way); without it a refit has no polish.
+TEST(EffectConfig, ARefitTakesTheLoopsPolish) {
+  const auto dir = fresh_dir("effect_config_refit_polish");
+  const FitConfig plain = load_fit_config(write_hidden_bench_fit(dir, "none", "{}"));
+  const FitConfig polished = load_fit_config(write_hidden_bench_fit(
+      dir, "none", "{refit: {polish: {method: lm, max_iterations: 3, covariance: false}}}"));
+  const nlohmann::json fitted = nlohmann::json::object();
+  const FitConfig a = load_fit_config(
+      write_refit_config(plain, fitted, find_effect("stribeck"), {}, (dir / "plain").string()));
+  const FitConfig b = load_fit_config(write_refit_config(polished, fitted, find_effect("stribeck"),
+                                                         {}, (dir / "polished").string()));
+  EXPECT_FALSE(a.polish.lm());
+  EXPECT_TRUE(b.polish.lm());
+  EXPECT_EQ(b.polish.max_iterations, 3u);
+  EXPECT_FALSE(b.polish.covariance);
+}
+
 }  // namespace
 }  // namespace motoflex::testing

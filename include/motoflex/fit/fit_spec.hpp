@@ -81,6 +81,22 @@ struct FitBudget {
   double max_seconds = 0.0;           // 0 = no limit
 };
 
+// The optional least-squares finish after the strategy (the `polish:` section): Levenberg–
+// Marquardt (Ceres) on the residual vector √w_j (q_real − q_sim)/√(T^m) of every scored frame and
+// channel of the training logs (so its squared norm is the fitness), with a central finite-
+// difference Jacobian through the rollout in the strategy's search coordinates (log where
+// `log: true`), clamped to the bounds. Its result replaces the strategy's best only if it lowers
+// the fitness. With `covariance` the summary reports σ²(JᵀJ)⁻¹ at the best point (σ² = RSS/(N−p)),
+// 95 % confidence intervals and the correlation matrix (also without LM: `method: none`).
+struct PolishSpec {
+  std::string method;               // "" / "none": no LM; "lm": Levenberg–Marquardt
+  std::size_t max_iterations = 20;  // LM iterations (each: one Jacobian, 2p rollouts of all logs)
+  double jacobian_step = 1e-3;      // finite-difference step, share of each bound width
+  bool covariance = true;           // uncertainty at the best point (default on with lm)
+  bool lm() const { return method == "lm"; }
+  bool reports_uncertainty() const { return covariance && (lm() || method == "none"); }
+};
+
 // What `motoflex loop` does with a fit (the `loop:` section; plain fits ignore it).
 struct LoopOptions {
   std::size_t candidates = 3;      // top-ranked effects refit per iteration
@@ -102,28 +118,16 @@ struct LoopOptions {
   std::size_t discover_screen = 0;
   StrategyConfig refit_strategy;  // the short warm-started refits
   FitBudget refit_budget;
+  // A refit's finish (default none): with `lm`, Levenberg–Marquardt from its best point, which
+  // is the current model (the refit's incumbent) when the search found nothing better, so the
+  // new effect is also tried right next to the model it extends.
+  PolishSpec refit_polish;
   LoopOptions() {
     refit_strategy.kind = "cma_es";
     refit_strategy.sigma = 0.1;
     refit_strategy.restarts = 0;
     refit_budget.max_evaluations = 240;
   }
-};
-
-// The optional least-squares finish after the strategy (the `polish:` section): Levenberg–
-// Marquardt (Ceres) on the residual vector √w_j (q_real − q_sim)/√(T^m) of every scored frame and
-// channel of the training logs (so its squared norm is the fitness), with a central finite-
-// difference Jacobian through the rollout in the strategy's search coordinates (log where
-// `log: true`), clamped to the bounds. Its result replaces the strategy's best only if it lowers
-// the fitness. With `covariance` the summary reports σ²(JᵀJ)⁻¹ at the best point (σ² = RSS/(N−p)),
-// 95 % confidence intervals and the correlation matrix (also without LM: `method: none`).
-struct PolishSpec {
-  std::string method;               // "" / "none": no LM; "lm": Levenberg–Marquardt
-  std::size_t max_iterations = 20;  // LM iterations (each: one Jacobian, 2p rollouts of all logs)
-  double jacobian_step = 1e-3;      // finite-difference step, share of each bound width
-  bool covariance = true;           // uncertainty at the best point (default on with lm)
-  bool lm() const { return method == "lm"; }
-  bool reports_uncertainty() const { return covariance && (lm() || method == "none"); }
 };
 
 // One `free:` entry: a model parameter name or pattern and how it is searched.
