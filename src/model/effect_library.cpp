@@ -30,6 +30,7 @@ const std::vector<Effect>& effect_library() {
       detail::quadratic_load_friction_effect(),
       detail::armature_effect(),
       detail::current_limit_effect(),
+      detail::backdrive_friction_effect(),
   };
   return library;
 }

@@ -70,6 +70,13 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   // Appended: a driver's current limit (the bench's voltage servo; the effect current_limit):
   // 1e3 A never binds on a servo.
   add("motor.current_limit_a", 1.0e3, 0.05, 1.0e3);
+  // Appended: the gear's back-driving loss (friction_family.hpp, the effect backdrive_friction),
+  // per N·m of load torque; 1 would hold any load at standstill.
+  for (const auto& a : model.actuators) {
+    const std::string joint = "joint." + a.name + ".";
+    add(joint + "backdrive_friction", 0.0, 0.0, 1.0);
+    add(joint + "backdrive_friction_static", 0.0, 0.0, 1.0);
+  }
   return specs;
 }
 
@@ -131,6 +138,8 @@ const DomainRule kDomainRules[] = {
     {"load_friction_quad_per_nm", false, kNonNegative},
     {"load_friction_external_quad_per_nm", false, kNonNegative},
     {"friction_model", false, {1.0, 6.0, false, false, true}},  // BAM's M1-M6
+    {"backdrive_friction", false, kNonNegative},
+    {"backdrive_friction_static", false, kNonNegative},
     {"cogging_nm", false, kNonNegative},
     {"cogging_periods", false, kPositive},
     {"drag_nm_s2_per_rad2", false, kNonNegative},

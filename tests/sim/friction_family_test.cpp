@@ -139,6 +139,34 @@ TEST(FrictionFamilyTest, LowerModelsIgnoreTheHigherCoefficients) {
   EXPECT_FALSE(friction_reads_external_torque(p));
 }
 
+// The back-driving loss (not BAM's): (K_b + s·K_bs)·|τ_e| while the load drives, nothing while the
+// motor does; the direction is the velocity's, or at standstill the net torque's.
+TEST(FrictionFamilyTest, BackdriveLossActsOnlyWhileTheLoadDrives) {
+  FrictionParams p;
+  p.model = FrictionModel::kM1;  // the term is outside BAM's structure switch
+  p.coulomb_nm = 0.01;
+  p.stribeck_velocity_rad_s = 0.5;
+  p.stribeck_exponent = 2.0;
+  p.backdrive = 0.2;
+  p.backdrive_static = 0.5;
+  const double te = -0.4;  // gravity pulling the arm down
+  // Standstill, the motor holding with less than the load: the load drives, full static loss.
+  EXPECT_DOUBLE_EQ(friction_budget_nm(p, 0.0, 0.1, te), 0.01 + 0.7 * 0.4);
+  // Standstill, the motor stronger than the load: it drives, no back-driving loss.
+  EXPECT_DOUBLE_EQ(friction_budget_nm(p, 0.0, 0.5, te), 0.01);
+  // Lowering at 1 rad/s against the motor: kinetic part plus the Stribeck-weighted static part.
+  EXPECT_DOUBLE_EQ(friction_budget_nm(p, -1.0, 0.1, te), 0.01 + (0.2 + 0.5 * std::exp(-4.0)) * 0.4);
+  // Coasting upwards on momentum while the motor pushes up: the motor drives.
+  EXPECT_DOUBLE_EQ(friction_budget_nm(p, 1.0, 0.1, te), 0.01);
+  // A released motor (τ_m = 0) is always driven.
+  EXPECT_DOUBLE_EQ(friction_budget_nm(p, 0.3, 0.0, -0.2),
+                   0.01 + (0.2 + 0.5 * std::exp(-0.36)) * 0.2);
+  EXPECT_TRUE(friction_reads_external_torque(p));
+  p.backdrive = p.backdrive_static = 0.0;
+  EXPECT_FALSE(friction_reads_external_torque(p));
+  EXPECT_DOUBLE_EQ(friction_budget_nm(p, 0.0, 0.1, te), 0.01);
+}
+
 class ReadFrictionTest : public ::testing::Test {
  protected:
   ReadFrictionTest() {
@@ -160,7 +188,9 @@ TEST_F(ReadFrictionTest, NamesAndModelSelection) {
   EXPECT_EQ(friction_parameter_names("j", FrictionTerms::kSpeedOnly).size(), 5u);
   EXPECT_EQ(friction_parameter_names("j", FrictionTerms::kMotorLoad).back(),
             "joint.j.load_friction");
-  EXPECT_EQ(friction_parameter_names("j", FrictionTerms::kFamily).back(), "joint.j.friction_model");
+  const auto family = friction_parameter_names("j", FrictionTerms::kFamily);
+  EXPECT_EQ(family[family.size() - 3], "joint.j.friction_model");
+  EXPECT_EQ(family.back(), "joint.j.backdrive_friction_static");
   ParameterSet set = values();
   set.set("joint.j.friction_model", 3.0);
   set.set("joint.j.load_friction_external", 0.2);
@@ -182,6 +212,7 @@ TEST_F(ReadFrictionTest, BadValuesAreModelErrors) {
         << model;
   }
   for (const char* name : {"joint.j.friction_nm", "joint.j.load_friction_external_quad_per_nm",
+                           "joint.j.backdrive_friction", "joint.j.backdrive_friction_static",
                            "joint.j.stribeck_velocity_rad_s", "joint.j.stribeck_exponent"}) {
     ParameterSet set = values();
     set.set(name, name == std::string("joint.j.stribeck_exponent") ? 0.0 : -0.1);

@@ -146,5 +146,36 @@ TEST(LawFrictionTest, BenchM3LoadFrictionReadsTheGravityTorque) {
   EXPECT_LT(m1.q_rad.back(), kQ0_rad - 0.1);
 }
 
+TEST(LawFrictionTest, BenchBackdriveLossHoldsTheArmYetTheMotorLiftsIt) {
+  // The gear's back-driving loss K_bs·|τ_e| (friction_family.hpp) on the bench, τ_g = 0.352 N·m
+  // at q0 and the command 1 rad above q0 (full duty, so τ_m = K_t·U/R at standstill):
+  //  * τ_m = 0.5·τ_g: the load drives; K_bs = 0.9 gives a budget 0.9·τ_g > 0.5·τ_g: it holds;
+  //  * τ_m = 1.5·τ_g: the motor drives, the loss is off, and the arm lifts.
+  //  * BAM's M5 with K_e = 0.9 instead holds the arm in both cases (|K_m·τ_m − K_e·τ_e| ≥
+  //    0.9·τ_g > 0.5·τ_g): it cannot hold an arm with little drive and still lift it.
+  const double gravity_nm = 0.5 * kTestGravity_m_s2 * 0.1 * std::sin(kQ0_rad);
+  RobotModel model = testing::make_one_joint_robot("friction_backdrive", kPendulum, "bench");
+  const auto run = [&](double drive_over_gravity, bool backdrive) {
+    ParameterSet v(model.parameters);
+    const double volts = v.get("bench.supply_v");
+    const double ohm = v.get("bench.R_ohm");
+    v.set("bench.Kt_nm_per_a", drive_over_gravity * gravity_nm * ohm / volts);
+    v.set(
+        backdrive ? "joint.hinge.backdrive_friction_static" : "joint.hinge.load_friction_external",
+        0.9);
+    return testing::run_steps(
+        model, v, "bench", kQ0_rad, [](double) { return kQ0_rad + 1.0; }, 0.3, kDt_s);
+  };
+  const double held = run(0.5, true).q_rad.back();
+  const double lifted = run(1.5, true).q_rad.back();
+  const double m5_lift = run(1.5, false).q_rad.back();
+  std::printf("[ backdrive ] q(0.3 s) - q0: held %.2e, lifted %.4f, M5 %.2e rad\n", held - kQ0_rad,
+              lifted - kQ0_rad, m5_lift - kQ0_rad);
+  EXPECT_NEAR(held, kQ0_rad, 1e-6);
+  // Net 0.5·τ_g on I = 0.0051 kg·m² lifts ~0.3 rad in 0.3 s (less as sin q grows): well clear.
+  EXPECT_GT(lifted, kQ0_rad + 0.1);
+  EXPECT_NEAR(m5_lift, kQ0_rad, 1e-6);
+}
+
 }  // namespace
 }  // namespace motoflex

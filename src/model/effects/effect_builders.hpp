@@ -43,5 +43,6 @@ Effect load_stribeck_friction_effect();
 Effect quadratic_load_friction_effect();
 Effect armature_effect();
 Effect current_limit_effect();
+Effect backdrive_friction_effect();
 
 }  // namespace motoflex::detail

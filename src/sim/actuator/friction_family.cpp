@@ -21,7 +21,9 @@ const char* const kLeaves[] = {"friction_nm",
                                "load_friction_external_stribeck",
                                "load_friction_quad_per_nm",
                                "load_friction_external_quad_per_nm",
-                               "friction_model"};
+                               "friction_model",
+                               "backdrive_friction",
+                               "backdrive_friction_static"};
 constexpr std::size_t kSpeedOnlyCount = 5;
 constexpr std::size_t kMotorLoadCount = 6;
 constexpr std::size_t kFamilyCount = std::size(kLeaves);
@@ -71,6 +73,16 @@ double quadratic_term(const FrictionParams& p, double motor_nm, double external_
   return 0.0;
 }
 
+// Whether the load drives the joint: the motor torque does not push the way the joint moves, or
+// would move at standstill (below 1 mrad/s ODE's stuck joint creeps; the net torque decides).
+bool load_drives(double velocity_rad_s, double motor_torque_nm, double external_torque_nm) {
+  constexpr double kStandstill_rad_s = 1.0e-3;
+  const double direction = std::abs(velocity_rad_s) > kStandstill_rad_s
+                               ? velocity_rad_s
+                               : motor_torque_nm + external_torque_nm;
+  return motor_torque_nm * direction <= 0.0;
+}
+
 }  // namespace
 
 double friction_budget_nm(const FrictionParams& params, double velocity_rad_s,
@@ -87,6 +99,12 @@ double friction_budget_nm(const FrictionParams& params, double velocity_rad_s,
   if (stribeck_nm != 0.0) budget_nm += stribeck_nm * shape;
   budget_nm += std::abs(p.load_motor * motor_torque_nm - p.load_external * external_torque_nm);
   if (quadratic) budget_nm += shape * quadratic_term(p, motor_torque_nm, external_torque_nm);
+  if ((p.backdrive != 0.0 || p.backdrive_static != 0.0) &&
+      load_drives(velocity_rad_s, motor_torque_nm, external_torque_nm)) {
+    const double static_part =
+        p.backdrive_static != 0.0 ? p.backdrive_static * stribeck_shape(p, velocity_rad_s) : 0.0;
+    budget_nm += (p.backdrive + static_part) * std::abs(external_torque_nm);
+  }
   return budget_nm;
 }
 
@@ -99,7 +117,7 @@ MotorCommand joint_friction(const FrictionParams& params, double velocity_rad_s,
 bool friction_reads_external_torque(const FrictionParams& params) {
   const FrictionParams p = effective(params);
   return p.load_external != 0.0 || p.load_stribeck_external != 0.0 || p.quad_motor_per_nm != 0.0 ||
-         p.quad_external_per_nm != 0.0;
+         p.quad_external_per_nm != 0.0 || p.backdrive != 0.0 || p.backdrive_static != 0.0;
 }
 
 namespace {
@@ -108,7 +126,7 @@ void check_friction(const FrictionParams& f, const std::string& prefix) {
   for (const double coefficient :
        {f.coulomb_nm, f.viscous_nm_s_per_rad, f.stribeck_nm, f.load_motor, f.load_external,
         f.load_stribeck_motor, f.load_stribeck_external, f.quad_motor_per_nm,
-        f.quad_external_per_nm}) {
+        f.quad_external_per_nm, f.backdrive, f.backdrive_static}) {
     if (coefficient < 0.0) {
       throw ModelError("friction parameters of " + prefix + "* must not be negative");
     }
@@ -167,6 +185,8 @@ FrictionParams read_named(const ParameterReader& get, const std::string& joint, 
       throw ModelError(prefix + "friction_model must be 1-6 (BAM's M1-M6)");
     }
     f.model = static_cast<FrictionModel>(static_cast<int>(model));
+    f.backdrive = value("backdrive_friction");
+    f.backdrive_static = value("backdrive_friction_static");
   }
   check_friction(f, prefix);
   return f;

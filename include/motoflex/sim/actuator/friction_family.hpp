@@ -16,6 +16,15 @@
 //   M5 directional       M2 + |K_m τ_m − K_e τ_e| + s·|K_ms τ_m − K_es τ_e|
 //   M6 quadratic         M5 + s·Q,  Q = K_eq τ_e² if |τ_m| > |τ_e|, K_mq τ_m² if |τ_m| < |τ_e|,
 //                        added only when τ_m and τ_e have opposite signs (BAM's code).
+// Beyond BAM's family, the gear's back-driving loss (motoflex's own; not one of M1–M6):
+//   + B·(K_b + s·K_bs)·|τ_e|,   B = 1 when the load drives the joint and the motor does not
+// (τ_m·d ≤ 0, d the direction of motion, or of the net torque τ_m + τ_e at standstill).
+// A high-ratio gear train loses more when the load turns the motor than when the motor turns the
+// load (back-driving efficiency below forward efficiency; a lossy gear in power-flow form): an
+// arm holds against gravity with little current yet still breaks away when the motor lifts it.
+// M1–M6 cannot tell these apart, since both have τ_m and τ_e opposed. `friction_model` leaves
+// this term alone; it is zero unless K_b or K_bs is set.
+//
 // M5 with K_m = K_e is M3's load term, and M6 with K_mq = K_eq = 0 is M5: each model is the most
 // general one (M6) with some coefficients switched off or tied, so one set of parameter names
 // serves all six (`joint.<J>.friction_model` picks the structure, see read_friction).
@@ -46,6 +55,8 @@ struct FrictionParams {
   double load_stribeck_external = 0.0;   // K_es (M5, M6)
   double quad_motor_per_nm = 0.0;        // K_mq (M6), 1/(N·m)
   double quad_external_per_nm = 0.0;     // K_eq (M6), 1/(N·m)
+  double backdrive = 0.0;                // K_b: N·m per N·m of |τ_e| while the load drives
+  double backdrive_static = 0.0;         // K_bs: the same, times the Stribeck shape s(θ̇)
 };
 
 // The friction budget (N·m, ≥ 0) at joint rate `velocity_rad_s` with motor torque
@@ -75,7 +86,8 @@ enum class FrictionTerms {
 // joint.<J>.{friction_nm, viscous_nm_s_per_rad, stribeck_nm, stribeck_velocity_rad_s,
 // stribeck_exponent, load_friction, load_friction_external, load_friction_stribeck,
 // load_friction_external_stribeck, load_friction_quad_per_nm,
-// load_friction_external_quad_per_nm, friction_model}.
+// load_friction_external_quad_per_nm, friction_model, backdrive_friction,
+// backdrive_friction_static}.
 std::vector<std::string> friction_parameter_names(const std::string& joint, FrictionTerms terms);
 
 // Reads the friction of `joint`. For kFamily, joint.<J>.friction_model (1–6) selects the model;
