@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <set>
@@ -12,6 +14,7 @@
 #include "motoflex/core/folder_lock.hpp"
 #include "motoflex/effects/convergence_guard.hpp"
 #include "motoflex/effects/loop_report.hpp"
+#include "motoflex/effects/refit_start_scan.hpp"
 #include "motoflex/effects/term_discovery.hpp"
 #include "motoflex/fit/effect_parameters.hpp"
 #include "motoflex/fit/fit_run.hpp"
@@ -70,16 +73,18 @@ Evaluated evaluate(FinishedFit fit) {
 // start is worse on the training logs than the current fit already is, the step has left the
 // region where the linearisation holds (a fit parameter the logs barely constrain can take a
 // long, wrong step); then the current fit with only the effect's estimate added is tried too,
-// and the refit starts at the better of the two. `start_rollouts` counts the rollouts this
-// took. A refit dir that already has its fit.yaml (a loop run again) keeps it, so the refit
-// resumes unchanged.
-// The effect to add and where its refit starts (the signature regression's or the discovery's
-// linearised optimum).
+// and the refit starts at the better of the two; with `refit: {scan: N}` the effect's own
+// parameters are then scanned across their bounds (scan_effect_start). `start_rollouts` counts
+// the rollouts this took. A refit dir that already has its fit.yaml (a loop run again) keeps it, so
+// the refit resumes unchanged. The effect to add and where its refit starts (the signature
+// regression's or the discovery's linearised optimum).
 struct RefitStart {
   const Effect* effect = nullptr;
   std::vector<std::pair<std::string, double>> estimate;   // effect parameters
   std::vector<std::pair<std::string, double>> fit_start;  // the fit's free parameters
 };
+
+using Estimate = std::vector<std::pair<std::string, double>>;
 
 std::string write_refit(const Evaluated& current, const RefitStart& candidate,
                         const std::string& dir, std::uint64_t* start_rollouts) {
@@ -87,21 +92,39 @@ std::string write_refit(const Evaluated& current, const RefitStart& candidate,
   if (fs::exists(yaml)) return yaml.string();
   const Effect& effect = *candidate.effect;
   const nlohmann::json& fitted = current.fit.best_json["free"];
-  const auto training_fitness = [&](const nlohmann::json& start) {
+  const auto training_fitness = [&](const nlohmann::json& start, const Estimate& estimate) {
     const FitConfig config = load_fit_config(
-        write_refit_config(current.fit.config, fitted, effect, candidate.estimate, dir, start));
+        write_refit_config(current.fit.config, fitted, effect, estimate, dir, start));
     *start_rollouts += config.train->cases().size();
     return config.train->evaluate(config.space->apply(config.space->start())).fitness;
   };
-  nlohmann::json linearised = fitted;
-  for (const auto& [name, value] : candidate.fit_start) linearised[name] = value;
-  const double linearised_fitness = training_fitness(linearised);
+  nlohmann::json start = fitted;
+  for (const auto& [name, value] : candidate.fit_start) start[name] = value;
+  double start_fitness = training_fitness(start, candidate.estimate);
   const double current_fitness =
       current.fit.summary.value("best_fitness", std::numeric_limits<double>::infinity());
-  if (linearised_fitness <= current_fitness) return yaml.string();
-  if (training_fitness(fitted) <= linearised_fitness) return yaml.string();
-  return write_refit_config(current.fit.config, fitted, effect, candidate.estimate, dir,
-                            linearised);
+  if (start_fitness > current_fitness) {
+    const double fitted_fitness = training_fitness(fitted, candidate.estimate);
+    if (fitted_fitness <= start_fitness) {
+      start = fitted;
+      start_fitness = fitted_fitness;
+    }
+  }
+  Estimate estimate = candidate.estimate;
+  const std::size_t points = current.fit.config.loop.refit_scan;
+  if (points >= 3) {
+    const FitConfig probe = load_fit_config(
+        write_refit_config(current.fit.config, fitted, effect, estimate, dir, start));
+    const double before = start_fitness;
+    detail::scan_effect_start(
+        *probe.space, points, [&](const Estimate& trial) { return training_fitness(start, trial); },
+        estimate, start_fitness);
+    std::printf(
+        "loop:   %s: start scan (%zu points per parameter): training fitness %.4g -> %.4g\n",
+        effect.name.c_str(), points, before, start_fitness);
+    std::fflush(stdout);
+  }
+  return write_refit_config(current.fit.config, fitted, effect, estimate, dir, start);
 }
 
 void account(LoopResult& result, const FinishedFit& fit) {

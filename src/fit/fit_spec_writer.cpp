@@ -134,6 +134,7 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
   if (!spec.loop.refit_polish.method.empty()) {
     fit["loop"]["refit"]["polish"] = polish_to_json(spec.loop.refit_polish);
   }
+  if (spec.loop.refit_scan > 0) fit["loop"]["refit"]["scan"] = spec.loop.refit_scan;
   fit["threads"] = spec.threads;
   fit["seed"] = spec.seed;
   fit["out"] = spec.out_dir;

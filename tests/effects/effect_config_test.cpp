@@ -157,5 +157,22 @@ TEST(EffectConfig, ARefitTakesTheLoopsPolish) {
   EXPECT_FALSE(b.polish.covariance);
 }
 
+// `loop: {refit: {scan: N}}`: read, kept through a refit's fit.yaml, and 1 or 2 points (no span
+// to scan) rejected naming the field.
+TEST(EffectConfig, RefitScanIsReadAndChecked) {
+  const auto dir = fresh_dir("effect_config_refit_scan");
+  const FitConfig scanned =
+      load_fit_config(write_hidden_bench_fit(dir / "nine", "none", "{refit: {scan: 9}}"));
+  EXPECT_EQ(scanned.loop.refit_scan, 9u);
+  EXPECT_EQ(load_fit_config(write_hidden_bench_fit(dir / "none", "none", "{}")).loop.refit_scan,
+            0u);
+  try {
+    load_fit_config(write_hidden_bench_fit(dir / "two", "none", "{refit: {scan: 2}}"));
+    FAIL() << "scan: 2 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("scan"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace motoflex::testing

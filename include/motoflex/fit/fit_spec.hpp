@@ -122,6 +122,12 @@ struct LoopOptions {
   // is the current model (the refit's incumbent) when the search found nothing better, so the
   // new effect is also tried right next to the model it extends.
   PolishSpec refit_polish;
+  // Points per parameter of the new effect scanned for a refit's start (0: none, else >= 3):
+  // each of the effect's parameters in turn across its bounds (log-spaced where `log`), the
+  // others held, keeping the best on the training logs. A parameter whose neutral value has no
+  // effect at all (a current limit far above any current) gives its signature a zero slope, and
+  // the linearised start barely moves it; the scan finds where it starts to act.
+  std::size_t refit_scan = 0;
   LoopOptions() {
     refit_strategy.kind = "cma_es";
     refit_strategy.sigma = 0.1;
