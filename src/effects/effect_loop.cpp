@@ -124,7 +124,8 @@ std::string write_refit(const Evaluated& current, const RefitStart& candidate,
         effect.name.c_str(), points, before, start_fitness);
     std::fflush(stdout);
   }
-  return write_refit_config(current.fit.config, fitted, effect, estimate, dir, start);
+  return write_refit_config(current.fit.config, fitted, effect, estimate, dir, start,
+                            start_fitness < current_fitness);
 }
 
 void account(LoopResult& result, const FinishedFit& fit) {

@@ -7,7 +7,7 @@ namespace {
 
 const FreeParameter* free_parameter(const ParameterSpace& space, const std::string& name) {
   for (const FreeParameter& p : space.free_parameters()) {
-    if (p.name == name) return &p;
+    if (p.name == name || (!p.targets.empty() && p.targets.front() == name)) return &p;
   }
   return nullptr;
 }

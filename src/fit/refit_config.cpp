@@ -32,7 +32,8 @@ std::vector<LogSource> sources(const std::vector<std::string>& logs) {
 
 FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, const Effect& effect,
                    const std::vector<std::pair<std::string, double>>& effect_start,
-                   const std::string& dir, const nlohmann::json& start_free) {
+                   const std::string& dir, const nlohmann::json& start_free,
+                   bool start_is_incumbent) {
   FitSpec spec;
   spec.name = from.name + "+" + effect.name;
   spec.scenario_path = from.scenario_path;
@@ -59,6 +60,11 @@ FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, con
     // The current model has the effect at its neutral value (the nearest one the bounds allow).
     spec.incumbent.emplace_back(
         p.name, std::clamp(from.space->base().get(p.targets.front()), p.lower, p.upper));
+  }
+  if (start_is_incumbent) {
+    for (std::size_t i = 0; i < spec.free.size(); ++i) {
+      if (spec.free[i].start) spec.incumbent[i].second = *spec.free[i].start;
+    }
   }
   spec.effects = from.effects;
   // An effect built on the fly (the loop's discovered terms) is not listed: its parameters are
@@ -89,8 +95,10 @@ FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, con
 std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitted_free,
                                const Effect& effect,
                                const std::vector<std::pair<std::string, double>>& effect_start,
-                               const std::string& dir, const nlohmann::json& start_free) {
-  const FitSpec spec = refit_spec(from, fitted_free, effect, effect_start, dir, start_free);
+                               const std::string& dir, const nlohmann::json& start_free,
+                               bool start_is_incumbent) {
+  const FitSpec spec =
+      refit_spec(from, fitted_free, effect, effect_start, dir, start_free, start_is_incumbent);
   fs::create_directories(dir);
   const std::string path = (fs::path(dir) / "fit.yaml").string();
   write_file_atomically(

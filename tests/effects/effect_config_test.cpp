@@ -157,6 +157,28 @@ TEST(EffectConfig, ARefitTakesTheLoopsPolish) {
   EXPECT_FALSE(b.polish.covariance);
 }
 
+// When the loop's start for a refit is already better than the current model, the start is the
+// incumbent: a search that samples only around its start can then never end above it.
+TEST(EffectConfig, AStartBetterThanTheModelIsTheIncumbent) {
+  const auto dir = fresh_dir("effect_config_start_incumbent");
+  const FitConfig base = load_fit_config(write_hidden_bench_fit(dir, "none", "{}"));
+  nlohmann::json fitted = nlohmann::json::object();
+  for (const FreeParameter& p : base.free_parameters) fitted[p.name] = p.start;
+  nlohmann::json start = fitted;
+  start["bench.Kt_nm_per_a"] = 0.4;
+  const Effect& stribeck = find_effect("stribeck");
+  const FitSpec kept = refit_spec(base, fitted, stribeck, {{"joint.pendulum.stribeck_nm", 0.1}},
+                                  (dir / "a").string(), start);
+  const FitSpec moved = refit_spec(base, fitted, stribeck, {{"joint.pendulum.stribeck_nm", 0.1}},
+                                   (dir / "b").string(), start, true);
+  const std::map<std::string, double> a(kept.incumbent.begin(), kept.incumbent.end());
+  const std::map<std::string, double> b(moved.incumbent.begin(), moved.incumbent.end());
+  EXPECT_EQ(a.at("bench.Kt_nm_per_a"), 0.5);  // the current model, effect neutral
+  EXPECT_EQ(a.at("joint.pendulum.stribeck_nm"), 0.0);
+  EXPECT_EQ(b.at("bench.Kt_nm_per_a"), 0.4);  // the start
+  EXPECT_EQ(b.at("joint.pendulum.stribeck_nm"), 0.1);
+}
+
 // `loop: {refit: {scan: N}}`: read, kept through a refit's fit.yaml, and 1 or 2 points (no span
 // to scan) rejected naming the field.
 TEST(EffectConfig, RefitScanIsReadAndChecked) {

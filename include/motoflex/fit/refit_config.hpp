@@ -17,15 +17,19 @@ namespace motoflex {
 // `start_free` (default: `fitted_free`; the loop may move the fit's own parameters to the
 // signature regression's linearised optimum) with the effect's new parameters at
 // `effect_start` (model parameter → value, e.g. the regression's estimate). Strategy and budget
-// are from.loop's refit options; the logs are from's, by absolute path.
+// are from.loop's refit options; the logs are from's, by absolute path. With
+// `start_is_incumbent` (the loop found a start better than the current model) the start is the
+// incumbent instead: a search that samples only around its start never drops below it.
 FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, const Effect& effect,
                    const std::vector<std::pair<std::string, double>>& effect_start,
-                   const std::string& dir, const nlohmann::json& start_free = nullptr);
+                   const std::string& dir, const nlohmann::json& start_free = nullptr,
+                   bool start_is_incumbent = false);
 // refit_spec written as `<dir>/fit.yaml` (a plain fit config, JSON, which YAML reads, so
 // `motoflex fit`, `resume` and `residuals` work on it as on any other); returns its path.
 std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitted_free,
                                const Effect& effect,
                                const std::vector<std::pair<std::string, double>>& effect_start,
-                               const std::string& dir, const nlohmann::json& start_free = nullptr);
+                               const std::string& dir, const nlohmann::json& start_free = nullptr,
+                               bool start_is_incumbent = false);
 
 }  // namespace motoflex
