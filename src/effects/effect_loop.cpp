@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <limits>
 #include <optional>
 #include <set>
@@ -67,6 +65,16 @@ Evaluated evaluate(FinishedFit fit) {
   return {std::move(fit), std::move(train), std::move(validation)};
 }
 
+// The effect to add and where its refit starts (the signature regression's or the discovery's
+// linearised optimum).
+struct RefitStart {
+  const Effect* effect = nullptr;
+  std::vector<std::pair<std::string, double>> estimate;   // effect parameters
+  std::vector<std::pair<std::string, double>> fit_start;  // the fit's free parameters
+};
+
+using Estimate = std::vector<std::pair<std::string, double>>;
+
 // Writes the refit of `current` with `candidate`'s effect into `dir` and returns its config
 // path. The refit starts at the signature regression's linearised optimum, which moves the
 // fit's own parameters too (it helps where the effect and a fit parameter trade off). If that
@@ -76,16 +84,8 @@ Evaluated evaluate(FinishedFit fit) {
 // and the refit starts at the better of the two; with `refit: {scan: N}` the effect's own
 // parameters are then scanned across their bounds (scan_effect_start). `start_rollouts` counts
 // the rollouts this took. A refit dir that already has its fit.yaml (a loop run again) keeps it, so
-// the refit resumes unchanged. The effect to add and where its refit starts (the signature
-// regression's or the discovery's linearised optimum).
-struct RefitStart {
-  const Effect* effect = nullptr;
-  std::vector<std::pair<std::string, double>> estimate;   // effect parameters
-  std::vector<std::pair<std::string, double>> fit_start;  // the fit's free parameters
-};
-
-using Estimate = std::vector<std::pair<std::string, double>>;
-
+// the refit resumes unchanged. With a start better than the current model, the start is the
+// refit's incumbent.
 std::string write_refit(const Evaluated& current, const RefitStart& candidate,
                         const std::string& dir, std::uint64_t* start_rollouts) {
   const fs::path yaml = fs::path(dir) / "fit.yaml";
