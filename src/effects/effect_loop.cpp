@@ -113,12 +113,27 @@ std::string write_refit(const Evaluated& current, const RefitStart& candidate,
   Estimate estimate = candidate.estimate;
   const std::size_t points = current.fit.config.loop.refit_scan;
   if (points >= 3) {
+    // One config for the whole scan: the effect's parameters follow the fit's own in its space.
     const FitConfig probe = load_fit_config(
         write_refit_config(current.fit.config, fitted, effect, estimate, dir, start));
+    const ParameterSpace& space = *probe.space;
+    std::vector<std::size_t> indices;
+    for (std::size_t i = current.fit.config.free_parameters.size(); i < space.dimension(); ++i) {
+      indices.push_back(i);
+    }
+    std::vector<double> x = space.start();
     const double before = start_fitness;
     detail::scan_effect_start(
-        *probe.space, points, [&](const Estimate& trial) { return training_fitness(start, trial); },
-        estimate, start_fitness);
+        space, indices, points,
+        [&](const std::vector<double>& trial) {
+          *start_rollouts += probe.train->cases().size();
+          return probe.train->evaluate(space.apply(trial)).fitness;
+        },
+        x, start_fitness);
+    estimate.clear();
+    for (const std::size_t i : indices) {
+      estimate.emplace_back(space.free_parameters()[i].targets.front(), space.to_model(i, x[i]));
+    }
     std::printf(
         "loop:   %s: start scan (%zu points per parameter): training fitness %.4g -> %.4g\n",
         effect.name.c_str(), points, before, start_fitness);

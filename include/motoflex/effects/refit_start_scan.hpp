@@ -8,21 +8,19 @@
 
 #include <cstddef>
 #include <functional>
-#include <string>
-#include <utility>
 #include <vector>
 
 #include "motoflex/fit/parameter_space.hpp"
 
 namespace motoflex::detail {
 
-// Each parameter of `estimate` that is free in `space` in turn, at `points` (>= 3) values evenly
-// spaced across its bounds in search coordinates (log-spaced where `log_scale`), the others held;
-// a value is kept only if `fitness` of the whole estimate falls below `best_fitness`, which is
-// updated. Names not free in `space` are left alone.
-void scan_effect_start(
-    const ParameterSpace& space, std::size_t points,
-    const std::function<double(const std::vector<std::pair<std::string, double>>&)>& fitness,
-    std::vector<std::pair<std::string, double>>& estimate, double& best_fitness);
+// Each coordinate of `x` listed in `indices` in turn, at `points` (>= 3) values evenly spaced
+// between the space's search bounds (so log-spaced where `log_scale`), the others held; a value
+// is kept only if `fitness(x)` falls below `best_fitness`, which is updated. Coordinates not
+// listed are left alone.
+void scan_effect_start(const ParameterSpace& space, const std::vector<std::size_t>& indices,
+                       std::size_t points,
+                       const std::function<double(const std::vector<double>&)>& fitness,
+                       std::vector<double>& x, double& best_fitness);
 
 }  // namespace motoflex::detail
