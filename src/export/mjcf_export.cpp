@@ -47,9 +47,13 @@ struct Writer {
       return;
     }
     const ActuatorExport& a = actuators[actuator];
+    // qpos is what the encoder reads, θ + m: the written pose is qpos = m, and the stops (on θ)
+    // move with it.
+    const double m = a.mounting_offset_rad;
+    if (m != 0.0) joint.attribute("ref", m);
     if (a.limited) {
       joint.attribute("limited", "true")
-          .attribute("range", format_numbers({a.lower_rad, a.upper_rad}));
+          .attribute("range", format_numbers({a.lower_rad + m, a.upper_rad + m}));
     } else {
       joint.attribute("limited", "false");
     }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/export/actuator_export.hpp"
 #include "motoflex/export/exported_file.hpp"
 #include "motoflex/export/mjcf_export.hpp"
 #include "motoflex/export/servo_export.hpp"
@@ -20,6 +21,12 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::vector<double> mounting_offsets_rad(const ExportInput& input) {
+  std::vector<double> out;
+  for (const ActuatorExport& a : export_actuators(input)) out.push_back(a.mounting_offset_rad);
+  return out;
 }
 
 // The commanded angles motoflex's servos receive at each physics step, as run_rollout samples
@@ -68,12 +75,16 @@ Replay replay_in_motoflex(const ExportInput& input, const CommandSamples& sample
   rollout_options.stop_on_fall = false;
   Rollout rollout(input.model, input.parameters, rollout_options, first);
   for (std::size_t k = 0; k < samples.settle_steps; ++k) rollout.step(first.data(), first.data());
+  // MuJoCo's qpos is the encoder's reading (the joint's `ref` is the mounting offset).
+  const std::vector<double> offsets = mounting_offsets_rad(input);
   Replay out;
   out.angles_rad.resize(samples.steps * n);
   const auto start = Clock::now();
   for (std::size_t k = 0; k < samples.steps; ++k) {
     if (!rollout.step(&samples.now[k * n], &samples.next[k * n])) break;
-    for (std::size_t j = 0; j < n; ++j) out.angles_rad[k * n + j] = rollout.joint_angle_rad(j);
+    for (std::size_t j = 0; j < n; ++j) {
+      out.angles_rad[k * n + j] = rollout.joint_angle_rad(j) + offsets[j];
+    }
     ++out.steps;
   }
   out.seconds = seconds_since(start);
@@ -87,7 +98,10 @@ Replay replay_in_mujoco(const ExportInput& input, const CommandSamples& samples,
   const std::size_t n = model.actuators.size();
   MjcfOptions mjcf;
   mjcf.weld_root = options.hold_torso;
+  // Placed by joint angle: the encoders read `first`.
+  const std::vector<double> offsets = mounting_offsets_rad(input);
   mjcf.placement_pose_rad = first;
+  for (std::size_t j = 0; j < n; ++j) mjcf.placement_pose_rad[j] -= offsets[j];
   mjcf.clearance_m = options.hold_torso ? kHeldTorsoClearance_m : -1.0;
   mjcf.armature = options.armature;
   std::string error;

@@ -31,6 +31,7 @@ const std::vector<Effect>& effect_library() {
       detail::armature_effect(),
       detail::current_limit_effect(),
       detail::backdrive_friction_effect(),
+      detail::mounting_offset_effect(),
   };
   return library;
 }

@@ -77,6 +77,11 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
     add(joint + "backdrive_friction", 0.0, 0.0, 1.0);
     add(joint + "backdrive_friction_static", 0.0, 0.0, 1.0);
   }
+  // Appended: the encoder's zero against the load's (the effect mounting_offset; BAM's q_offset
+  // bounds, ±0.1 rad).
+  for (const auto& a : model.actuators) {
+    add(joint_parameter(a, "mounting_offset", joint_units(a).position), 0.0, -0.1, 0.1);
+  }
   return specs;
 }
 

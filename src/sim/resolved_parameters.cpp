@@ -41,6 +41,10 @@ std::string encoder_offset_name(const ActuatorSpec& a) {
   return joint_parameter(a, "encoder_offset", joint_units(a).position);
 }
 
+std::string mounting_offset_name(const ActuatorSpec& a) {
+  return joint_parameter(a, "mounting_offset", joint_units(a).position);
+}
+
 JointTorqueTerms read_torque_terms(const ParameterReader& get, const std::string& joint) {
   JointTorqueTerms out;
   for (const TorqueTerm& term : torque_terms()) {
@@ -98,6 +102,8 @@ std::vector<std::string> rollout_wide_parameter_names(const RobotModel& model,
     names.insert(names.end(), std::begin(kContactNames), std::end(kContactNames));
   }
   names.insert(names.end(), std::begin(kWorldNames), std::end(kWorldNames));
+  // Appended, so that the names above keep their order in parameter files.
+  for (const auto& a : model.actuators) names.push_back(mounting_offset_name(a));
   return names;
 }
 
@@ -108,7 +114,8 @@ ResolvedParameters resolve_parameters(const RobotModel& model, const ParameterSe
   out.encoders.resize(model.actuators.size());
   for (std::size_t i = 0; i < model.actuators.size(); ++i) {
     const std::string joint = "joint." + model.actuators[i].name + ".";
-    out.encoders[i] = {get(joint + "encoder_scale"), get(encoder_offset_name(model.actuators[i]))};
+    out.encoders[i] = {get(joint + "encoder_scale"), get(encoder_offset_name(model.actuators[i])),
+                       get(mounting_offset_name(model.actuators[i]))};
     out.torque_terms.push_back(read_torque_terms(get, model.actuators[i].name));
   }
   if (point_mass_arm) {

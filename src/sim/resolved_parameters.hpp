@@ -17,10 +17,13 @@
 namespace motoflex::detail {
 
 struct EncoderCalibration {
-  // What the logging encoder reports: scale·θ + offset (then delay, quantisation, noise). The
-  // servo regulates the true angle; these are calibration errors of the reported angle.
+  // What the joint's encoder reads: θ + mounting_offset, θ the joint's angle from the pose the
+  // model was built in (where the load hangs). The servo regulates on that reading. The log
+  // reports scale·reading + offset (then delay, quantisation, noise): scale and offset are
+  // calibration errors of the reported angle only.
   double scale = 1.0;
   double offset_rad = 0.0;
+  double mounting_offset_rad = 0.0;
 };
 
 struct FlexParameters {

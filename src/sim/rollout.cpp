@@ -169,7 +169,9 @@ struct Rollout::Impl {
   void read_foot_forces();
   std::optional<std::string> fall_reason(const Rollout& self) const;
   bool diverged(std::string& detail) const;
-  double encoder_input(std::size_t actuator) const;  // what the encoder senses now
+  // The joint's encoder: the angle plus its mounting offset (what the servo regulates on).
+  double sensed_angle_rad(std::size_t actuator) const;
+  double encoder_input(std::size_t actuator) const;  // what the logging encoder reports now
 };
 
 void Rollout::Impl::build_world() {
@@ -501,9 +503,13 @@ void Rollout::Impl::place(const std::vector<double>& pose_rad) {
   }
 }
 
+double Rollout::Impl::sensed_angle_rad(std::size_t i) const {
+  return axes[i].angle_rad() + params.encoders[i].mounting_offset_rad;
+}
+
 double Rollout::Impl::encoder_input(std::size_t i) const {
   const detail::EncoderCalibration& calibration = params.encoders[i];
-  return calibration.scale * axes[i].angle_rad() + calibration.offset_rad;
+  return calibration.scale * sensed_angle_rad(i) + calibration.offset_rad;
 }
 
 void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) {
@@ -522,7 +528,7 @@ void Rollout::Impl::apply_servos(const double* now_rad, const double* next_rad) 
     const detail::OdeAxis& axis = axes[i];
     input.command_rad = now_rad[i];
     input.next_command_rad = next_rad[i];
-    input.angle_rad = axis.angle_rad();
+    input.angle_rad = sensed_angle_rad(i);
     input.rate_rad_s = axis.rate_rad_s();
     input.external_torque_nm = axis_rows[i].external_torque ? external_torque_nm(i) : 0.0;
     const ServoOutput out = servos[i]->step(input);
@@ -665,7 +671,12 @@ Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
   impl_->contact_feedback.resize(foot_contacts);
   impl_->contact_owner.resize(impl_->contact_feedback.size());
   impl_->foot_force_n.assign(impl_->foot_geoms.size(), Eigen::Vector3d::Zero());
-  impl_->place(initial_pose_rad);
+  // The pose is given as the encoders read it; a mounting offset puts the joint off by it.
+  std::vector<double> pose_rad = initial_pose_rad;
+  for (std::size_t i = 0; i < pose_rad.size(); ++i) {
+    pose_rad[i] -= impl_->params.encoders[i].mounting_offset_rad;
+  }
+  impl_->place(pose_rad);
 }
 
 Rollout::~Rollout() = default;

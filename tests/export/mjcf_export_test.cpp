@@ -45,9 +45,13 @@ void expect_actuated_values(const ExportInput& input, const mjModel& m) {
     EXPECT_EQ(m.dof_damping[dof], a.damping_nm_s_per_rad) << a.joint;
     EXPECT_EQ(m.dof_frictionloss[dof], a.friction_nm) << a.joint;
     EXPECT_EQ(m.jnt_limited[joint], a.limited ? 1 : 0) << a.joint;
+    // qpos is the encoder's reading: the written pose is qpos = the mounting offset (the
+    // fixture's is −0.08 rad), and the stops on the joint angle move with it.
+    EXPECT_NE(a.mounting_offset_rad, 0.0) << a.joint;
+    EXPECT_EQ(m.qpos0[m.jnt_qposadr[joint]], a.mounting_offset_rad) << a.joint;
     if (a.limited) {
-      EXPECT_EQ(m.jnt_range[2 * joint], a.lower_rad) << a.joint;
-      EXPECT_EQ(m.jnt_range[2 * joint + 1], a.upper_rad) << a.joint;
+      EXPECT_EQ(m.jnt_range[2 * joint], a.lower_rad + a.mounting_offset_rad) << a.joint;
+      EXPECT_EQ(m.jnt_range[2 * joint + 1], a.upper_rad + a.mounting_offset_rad) << a.joint;
     }
     // Actuators in model (log column) order, each on its joint.
     const int u = static_cast<int>(i);
@@ -134,14 +138,16 @@ TEST(MjcfExport, PendulumIsAFixedBaseBenchWithThePointMassAndArmature) {
   const double* anchor = d->xanchor;
   EXPECT_NEAR(std::hypot(com[0] - anchor[0], com[2] - anchor[2]),
               f.input->parameters.get("bench.length_m"), 1e-12);
-  // Static check of gravity and the servo: at rest with the arm at q, the actuator balances
-  // m·g·l·sin q (MuJoCo's gravity torque about +y is −m·g·l·sin q for our arm).
+  // Static check of gravity and the servo: at rest with the encoder reading q, the actuator
+  // balances m·g·l·sin(q − m_offset), the joint angle being the reading less the mounting offset
+  // (MuJoCo's gravity torque about +y is −m·g·l·sin θ for our arm).
   const double q = 0.3;
+  const double offset = f.input->parameters.get("joint.pendulum.mounting_offset_rad");
   d->qpos[0] = q;
   mj_forward(m.get(), d);
   const double l = f.input->parameters.get("bench.length_m");
   const double mass = f.input->parameters.get("bench.mass_kg");
-  EXPECT_NEAR(d->qfrc_bias[0], mass * 9.81 * l * std::sin(q), 1e-9);
+  EXPECT_NEAR(d->qfrc_bias[0], mass * 9.81 * l * std::sin(q - offset), 1e-9);
   mj_deleteData(d);
 }
 

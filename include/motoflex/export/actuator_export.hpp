@@ -71,6 +71,9 @@ struct ActuatorExport {
   double kp_nm_per_rad = 0.0;         // linearised servo stiffness
   double kv_nm_s_per_rad = 0.0;       // linearised servo damping (on the joint rate)
   bool command_is_next_angle = false;  // ideal servo: the target is the angle at step end
+  // The encoder reads the joint angle plus this (the effect mounting_offset): the servo's and
+  // the log's zero, off the build pose's. MJCF's joint `ref`; URDF and SDF have no such field.
+  double mounting_offset_rad = 0.0;
 };
 
 // Joint-level values of the flexible-link joints (seed 001 eq. 1), when the model has any.

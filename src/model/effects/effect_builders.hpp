@@ -44,5 +44,6 @@ Effect quadratic_load_friction_effect();
 Effect armature_effect();
 Effect current_limit_effect();
 Effect backdrive_friction_effect();
+Effect mounting_offset_effect();
 
 }  // namespace motoflex::detail
