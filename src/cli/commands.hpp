@@ -14,6 +14,7 @@ CommandRunner add_bench_command(CLI::App& app);
 CommandRunner add_fit_command(CLI::App& app);
 CommandRunner add_resume_command(CLI::App& app);
 CommandRunner add_import_bam_command(CLI::App& app);
+CommandRunner add_calibrate_bam_command(CLI::App& app);
 CommandRunner add_import_motoflex_command(CLI::App& app);
 CommandRunner add_experiment_command(CLI::App& app);
 CommandRunner add_titan_command(CLI::App& app);

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   runners["fit"] = motoflex::cli::add_fit_command(app);
   runners["resume"] = motoflex::cli::add_resume_command(app);
   runners["import-bam"] = motoflex::cli::add_import_bam_command(app);
+  runners["calibrate-bam"] = motoflex::cli::add_calibrate_bam_command(app);
   runners["import-motoflex"] = motoflex::cli::add_import_motoflex_command(app);
   runners["experiment"] = motoflex::cli::add_experiment_command(app);
   runners["titan"] = motoflex::cli::add_titan_command(app);

@@ -93,11 +93,15 @@ std::optional<NotATrajectory> classify(const json& doc) {
   }
   std::string looks_like = "no entries list: not a BAM trajectory log";
   if (doc.contains("pwm_period") && doc.contains("samples")) {
-    looks_like = "PWM duty vs position error calibration table, not a trajectory log";
+    looks_like =
+        "PWM duty vs position error calibration table, not a trajectory log (motoflex "
+        "calibrate-bam fits it)";
   } else if (doc.contains("positions") && doc.contains("timestamps")) {
     looks_like = "free pendulum position log without goal or torque state, not a trajectory log";
   } else if (is_speed_vs_voltage_table(doc)) {
-    looks_like = "no-load speed vs voltage calibration table, not a trajectory log";
+    looks_like =
+        "no-load speed vs voltage calibration table, not a trajectory log (motoflex "
+        "calibrate-bam fits it)";
   }
   return NotATrajectory{"entries", true, looks_like};
 }

@@ -170,7 +170,7 @@ TEST(RealServoLoop, BeatsTheCoulombViscousModelOnValidationLogs) {
     fit.replace(fit.find(from), from.size(), to);
   };
   replace("scenario: ../", "scenario: " + std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/");
-  replace("max_iterations: 3", "max_iterations: 1");
+  replace("max_iterations: 6", "max_iterations: 1");
   std::ofstream(dir / "fit.yaml") << fit;
   // Not forced: `motoflex loop scenarios/fit/servo_pendulum_bam.yaml --data ... --validation ...`
   // must run as written, so the bundled budget has to let the base fit converge (a loop on an
