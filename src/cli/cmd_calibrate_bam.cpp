@@ -3,6 +3,7 @@
 // error): the back-EMF / torque constant and the firmware gain, each through the origin (BAM's
 // fit) and with an intercept, with 95 % intervals (io/servo_calibration_table.hpp).
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
