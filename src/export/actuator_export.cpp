@@ -60,11 +60,9 @@ std::vector<ActuatorExport> export_actuators(const ExportInput& input) {
     a.lower_rad = a.limited ? spec.lower_rad : 0.0;
     a.upper_rad = a.limited ? spec.upper_rad : 0.0;
     rule.fill(input, i, get, a);
-    const std::string mounting =
-        joint_parameter(spec, "mounting_offset", joint_units(spec).position);
-    if (input.parameters.registry().contains(mounting)) {
-      a.mounting_offset_rad = input.parameters.get(mounting);
-    }
+    // Every robot has it (the effect catalog); the rollout reads it the same way.
+    a.mounting_offset_rad =
+        input.parameters.get(joint_parameter(spec, "mounting_offset", joint_units(spec).position));
     a.command_is_next_angle = rule.command_is_next_angle;
     // A rule that knows its law's speed limit sets it (pd_torque's torque-speed curve).
     if (a.velocity_rad_s == 0.0)

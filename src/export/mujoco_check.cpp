@@ -23,12 +23,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::vector<double> mounting_offsets_rad(const ExportInput& input) {
-  std::vector<double> out;
-  for (const ActuatorExport& a : export_actuators(input)) out.push_back(a.mounting_offset_rad);
-  return out;
-}
-
 // The commanded angles motoflex's servos receive at each physics step, as run_rollout samples
 // them: settling steps on the first frame, then the trajectory at t (now) and t + dt (next).
 struct CommandSamples {
@@ -62,9 +56,12 @@ struct Replay {
   std::size_t geoms = 0, visual_geoms = 0;
 };
 
+// `offsets_rad`: each joint's mounting offset. MuJoCo's qpos is the encoder's reading (the
+// joint's `ref` is the offset), so motoflex's joint angles are compared with the offset added,
+// and the robot is placed where its encoders read `first`.
 Replay replay_in_motoflex(const ExportInput& input, const CommandSamples& samples,
-                          const std::vector<double>& first, const MujocoCheckOptions& options,
-                          StepSolver solver) {
+                          const std::vector<double>& first, const std::vector<double>& offsets_rad,
+                          const MujocoCheckOptions& options, StepSolver solver) {
   const std::size_t n = input.model.actuators.size();
   RolloutOptions rollout_options;
   rollout_options.dt_s = input.dt_s;
@@ -75,15 +72,13 @@ Replay replay_in_motoflex(const ExportInput& input, const CommandSamples& sample
   rollout_options.stop_on_fall = false;
   Rollout rollout(input.model, input.parameters, rollout_options, first);
   for (std::size_t k = 0; k < samples.settle_steps; ++k) rollout.step(first.data(), first.data());
-  // MuJoCo's qpos is the encoder's reading (the joint's `ref` is the mounting offset).
-  const std::vector<double> offsets = mounting_offsets_rad(input);
   Replay out;
   out.angles_rad.resize(samples.steps * n);
   const auto start = Clock::now();
   for (std::size_t k = 0; k < samples.steps; ++k) {
     if (!rollout.step(&samples.now[k * n], &samples.next[k * n])) break;
     for (std::size_t j = 0; j < n; ++j) {
-      out.angles_rad[k * n + j] = rollout.joint_angle_rad(j) + offsets[j];
+      out.angles_rad[k * n + j] = rollout.joint_angle_rad(j) + offsets_rad[j];
     }
     ++out.steps;
   }
@@ -93,15 +88,15 @@ Replay replay_in_motoflex(const ExportInput& input, const CommandSamples& sample
 }
 
 Replay replay_in_mujoco(const ExportInput& input, const CommandSamples& samples,
-                        const std::vector<double>& first, const MujocoCheckOptions& options) {
+                        const std::vector<double>& first, const std::vector<double>& offsets_rad,
+                        const MujocoCheckOptions& options) {
   const RobotModel& model = input.model;
   const std::size_t n = model.actuators.size();
   MjcfOptions mjcf;
   mjcf.weld_root = options.hold_torso;
   // Placed by joint angle: the encoders read `first`.
-  const std::vector<double> offsets = mounting_offsets_rad(input);
   mjcf.placement_pose_rad = first;
-  for (std::size_t j = 0; j < n; ++j) mjcf.placement_pose_rad[j] -= offsets[j];
+  for (std::size_t j = 0; j < n; ++j) mjcf.placement_pose_rad[j] -= offsets_rad[j];
   mjcf.clearance_m = options.hold_torso ? kHeldTorsoClearance_m : -1.0;
   mjcf.armature = options.armature;
   std::string error;
@@ -159,9 +154,14 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
   const CommandSamples samples = sample_commands(commands, input.dt_s, options.settle_s);
   std::vector<double> first(n);
   for (std::size_t j = 0; j < n; ++j) first[j] = commands.angle_rad(0, j);
-  const Replay ode = replay_in_motoflex(input, samples, first, options, StepSolver::kStep);
-  const Replay quick = replay_in_motoflex(input, samples, first, options, StepSolver::kQuickStep);
-  const Replay mujoco = replay_in_mujoco(input, samples, first, options);
+  std::vector<double> offsets_rad;
+  for (const ActuatorExport& a : export_actuators(input))
+    offsets_rad.push_back(a.mounting_offset_rad);
+  const Replay ode =
+      replay_in_motoflex(input, samples, first, offsets_rad, options, StepSolver::kStep);
+  const Replay quick =
+      replay_in_motoflex(input, samples, first, offsets_rad, options, StepSolver::kQuickStep);
+  const Replay mujoco = replay_in_mujoco(input, samples, first, offsets_rad, options);
 
   MujocoComparison out;
   out.joints = model.actuator_names();

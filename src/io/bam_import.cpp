@@ -10,6 +10,7 @@
 #include <numbers>
 #include <string_view>
 
+#include "json_fields.hpp"
 #include "motoflex/core/error.hpp"
 #include "python_json.hpp"
 
@@ -18,6 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using Fields = detail::JsonFields;
+using detail::number_text;
 
 constexpr const char* kRobot = "servo_pendulum";
 constexpr const char* kJoint = "pendulum";
@@ -48,12 +51,6 @@ constexpr std::pair<std::string_view, std::string_view> kMotorRemarks[] = {
      "kp is nominal only: the recorder's set_p_gain was a no-op, so the servo ran with its "
      "stored P gain; BAM has no STS3250 model (it ships STS3215, a different servo)"},
 };
-
-std::string number_text(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return std::string(buffer, result.ptr);
-}
 
 std::string fixed_text(double value, int decimals) {
   char buffer[64];
@@ -105,50 +102,6 @@ std::optional<NotATrajectory> classify(const json& doc) {
   }
   return NotATrajectory{"entries", true, looks_like};
 }
-
-// Field access for one file; every problem is an InputError naming the file and field.
-class Fields {
- public:
-  explicit Fields(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const std::string& field, const std::string& message) const {
-    throw InputError(file_, 0, field, message);
-  }
-
-  const json& required(const json& object, const char* key, const std::string& field) const {
-    const auto found = object.find(key);
-    if (found == object.end()) fail(field, "missing key");
-    return *found;
-  }
-
-  double number(const json& value, const std::string& field) const {
-    if (const auto word = bare_non_finite_word(value)) {
-      fail(field, *word + " is not a finite number");
-    }
-    if (!value.is_number()) {
-      fail(field, std::string("expected a number, found ") + value.type_name());
-    }
-    const double x = value.get<double>();
-    if (!std::isfinite(x)) fail(field, "number out of range");
-    return x;
-  }
-
-  double positive(const json& value, const std::string& field) const {
-    const double x = number(value, field);
-    if (!(x > 0.0)) fail(field, "must be > 0, found " + number_text(x));
-    return x;
-  }
-
-  std::string text(const json& value, const std::string& field) const {
-    if (!value.is_string()) {
-      fail(field, std::string("expected a string, found ") + value.type_name());
-    }
-    return value.get<std::string>();
-  }
-
- private:
-  std::string file_;
-};
 
 // The value at `key`, or null when the object has no such key.
 const json* find_key(const json& object, const char* key) {
