@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <limits>
 
 #include "fit_residuals.hpp"
@@ -41,10 +42,37 @@ class RolloutCost final : public ceres::CostFunction {
   std::atomic<std::uint64_t>& rollouts_;
 };
 
+// Reports every iteration and ends the solve when the hooks say so. Ceres's cost is ½‖r‖² and
+// ‖r‖² is the fitness (fit_residuals.hpp).
+class ProgressCallback final : public ceres::IterationCallback {
+ public:
+  ProgressCallback(const LmPolishHooks& hooks, const std::atomic<std::uint64_t>& rollouts)
+      : hooks_(hooks), rollouts_(rollouts), start_(std::chrono::steady_clock::now()) {}
+
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    if (hooks_.on_iteration) {
+      LmIteration event;
+      event.iteration = summary.iteration;
+      event.fitness = 2.0 * summary.cost;
+      event.rollouts = rollouts_.load();
+      event.seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      hooks_.on_iteration(event);
+    }
+    if (hooks_.should_stop && hooks_.should_stop()) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const LmPolishHooks& hooks_;
+  const std::atomic<std::uint64_t>& rollouts_;
+  std::chrono::steady_clock::time_point start_;
+};
+
 }  // namespace
 
 LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& start,
-                         double start_fitness) {
+                         double start_fitness, const LmPolishHooks& hooks) {
   const FitResiduals residuals(config, config.threads);
   LmPolishResult result;
   result.x = start;
@@ -77,6 +105,9 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
   options.max_num_line_search_step_size_iterations = 0;
   options.logging_type = ceres::SILENT;
   options.minimizer_progress_to_stdout = false;
+  if (hooks.max_seconds > 0.0) options.max_solver_time_in_seconds = hooks.max_seconds;
+  ProgressCallback progress(hooks, rollouts);
+  options.callbacks.push_back(&progress);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   result.iterations = static_cast<int>(summary.iterations.size());

@@ -5,6 +5,7 @@
 // bounds, and the parameter covariance at the final point (parameter_covariance.hpp).
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,25 @@ struct LmPolishResult {
   std::string termination;  // Ceres's message
 };
 
+// One finished LM iteration (Ceres's iteration 0 is the start point).
+struct LmIteration {
+  int iteration = 0;
+  double fitness = 0.0;        // F at LM's current point (= 2 × Ceres's cost)
+  std::uint64_t rollouts = 0;  // passes over all training logs so far
+  double seconds = 0.0;        // LM's wall time so far
+};
+
+// How LM reports and ends early. Each iteration costs a Jacobian (2p passes over the logs), so
+// a long polish says where it is, stops after the iteration in which `should_stop` turns true
+// (Ctrl-C, a cancelled session) and within `max_seconds` (> 0; the fit's remaining time budget).
+struct LmPolishHooks {
+  std::function<void(const LmIteration&)> on_iteration;
+  std::function<bool()> should_stop;
+  double max_seconds = 0.0;  // 0: no limit
+};
+
 LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& start,
-                         double start_fitness);
+                         double start_fitness, const LmPolishHooks& hooks = {});
 
 struct FitUncertainty {
   LeastSquaresCovariance search;  // in the strategy's coordinates (log where searched so)

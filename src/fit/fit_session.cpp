@@ -237,9 +237,32 @@ void run_polish(const FitConfig& config, const motoflex_es::Strategy& strategy, 
 }
 
 // The `polish: {method: lm}` finish: kept only if it lowers the fitness.
+// LM reports each iteration, stops after the iteration in which the session is cancelled, and
+// gets what is left of a `budget: {seconds}` (none left: it does not run).
 void run_lm_polish(const FitConfig& config, double seconds, const SessionHooks& hooks,
                    detail::RunResult& result) {
-  result.lm = detail::lm_polish(config, result.best_x, result.best_fitness);
+  detail::LmPolishHooks lm_hooks;
+  lm_hooks.should_stop = hooks.should_stop;
+  if (config.budget.max_seconds > 0.0) {
+    lm_hooks.max_seconds = config.budget.max_seconds - seconds;
+    if (lm_hooks.max_seconds <= 0.0) {
+      result.lm.x = result.best_x;
+      result.lm.fitness_before = result.lm.fitness_after = result.best_fitness;
+      result.lm.termination = "not run: the time budget was spent";
+      result.lm_ran = true;
+      return;
+    }
+  }
+  lm_hooks.on_iteration = [&](const detail::LmIteration& step) {
+    FitProgress event;
+    event.polish = true;
+    event.polish_algorithm = "lm iteration " + std::to_string(step.iteration);
+    event.evaluations = step.rollouts;
+    event.best_fitness = step.fitness;
+    event.seconds = seconds + step.seconds;
+    hooks.report(event);
+  };
+  result.lm = detail::lm_polish(config, result.best_x, result.best_fitness, lm_hooks);
   result.lm_ran = true;
   result.polish_evaluations += result.lm.rollouts;
   if (result.lm.used) {

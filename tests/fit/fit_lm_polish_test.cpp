@@ -53,7 +53,8 @@ TEST(FitLmPolishTest, ADirectionTheDataCannotSeeHasNoFiniteVariance) {
 
 // A fit of the four bench parameters from 15 % off the truth, the strategy given almost no
 // budget, so that LM does the work.
-std::string write_fit(const fs::path& dir, const fs::path& data, const std::string& polish) {
+std::string write_fit(const fs::path& dir, const fs::path& data, const std::string& polish,
+                      const std::string& budget = "{evaluations: 16}") {
   const auto truth = pendulum_truth();
   const auto start = [&](const char* name) { return std::to_string(1.15 * truth.at(name)); };
   const std::string path = (dir / "fit.yaml").string();
@@ -69,7 +70,7 @@ std::string write_fit(const fs::path& dir, const fs::path& data, const std::stri
                       << "  bench.armature_kg_m2: {lower: 0.0001, upper: 0.05, log: true, start: "
                       << start("bench.armature_kg_m2") << "}\n"
                       << "strategy: {kind: cma_es, sigma: 0.001, restarts: 0}\n"
-                      << "budget: {evaluations: 16}\nthreads: 2\nseed: 3\n"
+                      << "budget: " << budget << "\nthreads: 2\nseed: 3\n"
                       << polish;
   return path;
 }
@@ -122,6 +123,68 @@ TEST(FitLmPolishTest, LmRecoversTheTruthAndItsIntervalsCoverIt) {
   // The report prints the intervals.
   EXPECT_NE(summary.full_report().find("95 % interval"), std::string::npos);
   EXPECT_NE(summary.brief_report().find("0 of 4 parameters unidentified"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// LM's iterations are what a long polish spends its time on (each: 2p passes over the logs):
+// the console gets one line per iteration with a fitness that never rises, a cancel ends the
+// polish after the iteration in which it came, and a spent time budget leaves LM out.
+TEST(FitLmPolishTest, LmReportsEachIterationAndStopsWhenCancelled) {
+  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_progress";
+  fs::remove_all(dir);
+  record_pendulum_log(dir / "data", "noisy", {{"sensor.noise_rad", 1e-3}}, 5);
+  const std::string polish = "polish: {method: lm, max_iterations: 30, covariance: false}\n";
+  const auto lm_iterations = [](const std::vector<FitProgress>& events) {
+    std::vector<FitProgress> out;
+    for (const FitProgress& e : events) {
+      if (e.polish && e.polish_algorithm.rfind("lm iteration ", 0) == 0) out.push_back(e);
+    }
+    return out;
+  };
+
+  FitOverrides overrides;
+  overrides.out = (dir / "full").string();
+  FitSession full(load_fit_config(write_fit(dir, dir / "data", polish), overrides), false);
+  std::vector<FitProgress> events;
+  full.set_progress([&](const FitProgress& e) { events.push_back(e); });
+  full.run();
+  const nlohmann::json json = nlohmann::json::parse(read_text(dir / "full" / "summary.json"));
+  const int iterations = json["polish"]["iterations"].get<int>();
+  const std::vector<FitProgress> steps = lm_iterations(events);
+  ASSERT_EQ(steps.size(), static_cast<std::size_t>(iterations));
+  ASSERT_GE(iterations, 3);  // measured 4 from 15 % off the truth: a cancel at 1 cuts it short
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    EXPECT_EQ(steps[k].polish_algorithm, "lm iteration " + std::to_string(k));
+    if (k > 0) {
+      EXPECT_LE(steps[k].best_fitness, steps[k - 1].best_fitness);
+      EXPECT_GT(steps[k].evaluations, steps[k - 1].evaluations);
+    }
+  }
+  // Iteration 0 is the strategy's best point; LM's last is where the polish ended.
+  EXPECT_NEAR(steps.front().best_fitness, json["polish"]["fitness_before"].get<double>(),
+              1e-9 * steps.front().best_fitness);
+  EXPECT_LT(steps.back().best_fitness, 0.5 * steps.front().best_fitness);
+
+  overrides.out = (dir / "cancelled").string();
+  FitSession cancelled(load_fit_config(write_fit(dir, dir / "data", polish), overrides), false);
+  cancelled.set_progress([&](const FitProgress& e) {
+    if (e.polish_algorithm == "lm iteration 1") cancelled.cancel();
+  });
+  cancelled.run();
+  const nlohmann::json stopped =
+      nlohmann::json::parse(read_text(dir / "cancelled" / "summary.json"));
+  EXPECT_EQ(stopped["polish"]["iterations"].get<int>(), 2);  // iterations 0 and 1
+  EXPECT_EQ(stopped["stop_reason"], "interrupted");
+
+  overrides.out = (dir / "no_time").string();
+  FitSession(
+      load_fit_config(write_fit(dir, dir / "data", polish, "{evaluations: 16, seconds: 1.0e-9}"),
+                      overrides),
+      false)
+      .run();
+  const nlohmann::json no_time = nlohmann::json::parse(read_text(dir / "no_time" / "summary.json"));
+  EXPECT_EQ(no_time["polish"]["termination"], "not run: the time budget was spent");
+  EXPECT_FALSE(no_time["polish"]["used"].get<bool>());
   fs::remove_all(dir);
 }
 
