@@ -1,5 +1,6 @@
 // motoflex fit <fit.yaml> [--threads N] [--seed S] [--max-generations G] [--max-evaluations E]
 //                         [--max-seconds T] [--out DIR] [--data DIR] [--validation DIR]
+//                         [--start-from BEST.json]
 // motoflex resume <run-dir> [--threads N] [--max-generations G] [--max-evaluations E]
 //                           [--max-seconds T]
 // Under mpirun/srun with several processes both run distributed (see fit_on_ranks.hpp).
@@ -26,7 +27,7 @@ struct FitArgs {
   long long max_generations = -1;
   long long max_evaluations = -1;
   double max_seconds = -1.0;
-  std::string out, data, validation;
+  std::string out, data, validation, start_from;
 };
 
 void add_budget_options(CLI::App* sub, FitArgs& args) {
@@ -54,6 +55,7 @@ int run_fit_command(const FitArgs& args) {
   if (!args.out.empty()) overrides.out = args.out;
   if (!args.data.empty()) overrides.data = args.data;
   if (!args.validation.empty()) overrides.validation = args.validation;
+  if (!args.start_from.empty()) overrides.start_from = args.start_from;
   return run_fit_on_ranks([&] { return load_fit_config(args.target, overrides); }, false);
 }
 
@@ -74,6 +76,8 @@ CommandRunner add_fit_command(CLI::App& app) {
   sub->add_option("--out", args->out, "run folder (checkpoint, results, plots)");
   sub->add_option("--data", args->data, "folder of training logs");
   sub->add_option("--validation", args->validation, "folder of validation logs");
+  sub->add_option("--start-from", args->start_from,
+                  "an earlier run's best.json: start there, never end worse (chained fits)");
   return [args] { return run_fit_command(*args); };
 }
 

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "fit_start_from.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/core/error_collector.hpp"
 #include "motoflex/fit/effect_parameters.hpp"
@@ -282,9 +283,13 @@ FitConfig resolve_fit_config(const FitSpec& spec) {
   const ParameterSet base = apply_fixed(spec, config.scenario->parameters);
   config.free_parameters = expand_all_free(spec, base);
   add_effect_parameters(spec, effects, base, *config.scenario, config.free_parameters);
+  if (!spec.start_from.empty()) {
+    config.incumbent = detail::start_from_best(spec.start_from, config.free_parameters);
+    config.incumbent_where = {spec.start_from, 0, "--start-from"};
+  }
   config.fitness = fitness_options(spec, *config.scenario->model);
   config.space = std::make_shared<ParameterSpace>(config.free_parameters, base);
-  config.incumbent_x = incumbent_coordinates(spec, *config.space);
+  config.incumbent_x = incumbent_coordinates(config, *config.space);
   load_fitness_functions(config);
 
   config.identity = fit_identity(config);

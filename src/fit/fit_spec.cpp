@@ -94,6 +94,7 @@ void apply_fit_overrides(FitSpec& spec, const FitOverrides& overrides) {
   if (overrides.max_generations) spec.budget.max_generations = *overrides.max_generations;
   if (overrides.max_evaluations) spec.budget.max_evaluations = *overrides.max_evaluations;
   if (overrides.max_seconds) spec.budget.max_seconds = *overrides.max_seconds;
+  if (overrides.start_from) spec.start_from = *overrides.start_from;
 }
 
 }  // namespace motoflex

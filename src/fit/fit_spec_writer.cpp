@@ -72,6 +72,7 @@ nlohmann::json overrides_to_json(const FitOverrides& o) {
   if (o.out) out["out"] = fs::absolute(*o.out).lexically_normal().string();
   if (o.data) out["data"] = fs::absolute(*o.data).lexically_normal().string();
   if (o.validation) out["validation"] = fs::absolute(*o.validation).lexically_normal().string();
+  if (o.start_from) out["start_from"] = fs::absolute(*o.start_from).lexically_normal().string();
   return out;
 }
 
@@ -85,6 +86,7 @@ FitOverrides overrides_from_json(const nlohmann::json& j) {
   if (j.contains("out")) o.out = j["out"].get<std::string>();
   if (j.contains("data")) o.data = j["data"].get<std::string>();
   if (j.contains("validation")) o.validation = j["validation"].get<std::string>();
+  if (j.contains("start_from")) o.start_from = j["start_from"].get<std::string>();
   return o;
 }
 

@@ -164,6 +164,9 @@ struct FitOverrides {
   std::optional<std::string> out;
   std::optional<std::string> data;
   std::optional<std::string> validation;
+  // A run's best.json (`--start-from`): every free parameter starts at its value there, and that
+  // point is the incumbent (evaluated first), so a fit chained on another never ends worse.
+  std::optional<std::string> start_from;
 };
 
 struct FitSpec {
@@ -184,6 +187,10 @@ struct FitSpec {
   // Empty: none.
   std::vector<std::pair<std::string, double>> incumbent;
   SourceRef incumbent_where;
+  // A run's best.json the search starts from and keeps as its incumbent (`--start-from`; it
+  // replaces `incumbent` and the `start` values): each free parameter's value from its "free"
+  // entry, else from "parameters" (a parameter the earlier run held), clamped to the bounds.
+  std::string start_from;
   double fitness_m = 2.0;                       // F = Σ error² / T^m (seed 001 eq. 2), m ≥ 0
   double fitness_settle_s = 0.0;                // unscored frames at each log's start
   std::map<std::string, double> joint_weights;  // joint → w_i ≥ 0 (absent: 1)
