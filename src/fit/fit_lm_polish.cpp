@@ -50,10 +50,14 @@ class ProgressCallback final : public ceres::IterationCallback {
       : hooks_(hooks), rollouts_(rollouts), start_(std::chrono::steady_clock::now()) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    // A rejected step reports the cost of the point it tried; LM stays where it was.
+    if (summary.iteration == 0 || summary.step_is_successful) {
+      best_fitness_ = std::min(best_fitness_, 2.0 * summary.cost);
+    }
     if (hooks_.on_iteration) {
       LmIteration event;
       event.iteration = summary.iteration;
-      event.fitness = 2.0 * summary.cost;
+      event.fitness = best_fitness_;
       event.rollouts = rollouts_.load();
       event.seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -67,6 +71,7 @@ class ProgressCallback final : public ceres::IterationCallback {
   const LmPolishHooks& hooks_;
   const std::atomic<std::uint64_t>& rollouts_;
   std::chrono::steady_clock::time_point start_;
+  double best_fitness_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace

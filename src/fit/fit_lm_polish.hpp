@@ -27,7 +27,7 @@ struct LmPolishResult {
 // One finished LM iteration (Ceres's iteration 0 is the start point).
 struct LmIteration {
   int iteration = 0;
-  double fitness = 0.0;        // F at LM's current point (= 2 × Ceres's cost)
+  double fitness = 0.0;  // F at LM's current point (2 × Ceres's cost; a rejected step keeps it)
   std::uint64_t rollouts = 0;  // passes over all training logs so far
   double seconds = 0.0;        // LM's wall time so far
 };
