@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""The paper's problem fitted in two stages (issue 20), measured in one run.
+
+Stage 1, scenarios/fit/nao_paper_short.yaml: the 19 free parameters of nao_paper.yaml from
+their nominal starts, scored on the first 2 s of the five training logs (before the walk turns
+chaotic), one CMA-ES generation and then Levenberg-Marquardt. Stage 2,
+scenarios/fit/nao_paper_finish.yaml: the whole 10 s logs, started from stage 1's best
+(`motoflex fit --start-from`), LM again. For each stage: evaluations (passes over the stage's
+logs), wall time (summary.json), the best fitness against F(truth) under the same scoring (one evaluation at the
+truth's values of the free parameters, the held ones as the config holds them), validation RMS,
+and per parameter the fitted value against the truth, with the stage's identification verdict
+(its 95 % intervals and sensitivities).
+
+    scripts/report_paper_chain.py                    # runs both stages (about 30 min on 2 cores)
+    scripts/report_paper_chain.py --report-only      # re-reads OUT/runs
+
+Writes OUT/paper_chain.md and OUT/paper_chain.json (default benchmarks/paper_chain/).
+"""
+
+import argparse
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import bench_fit_speed as fit_speed
+from bench_strategies import derived_config, truth_point, write_config
+
+ROOT = Path(__file__).resolve().parent.parent
+STAGES = [("short", ROOT / "scenarios/fit/nao_paper_short.yaml"),
+          ("finish", ROOT / "scenarios/fit/nao_paper_finish.yaml")]
+
+
+def truth_fitness(binary, out, config_path, threads):
+    """F at the truth under `config_path`'s scoring (its window), one evaluation, no polish."""
+    point = truth_point(config_path, fit_speed.TRUTH)
+    config = derived_config(config_path, {"kind": "nlopt", "algorithm": "sbplx"}, 1, threads, 1)
+    config.pop("polish", None)
+    config["free"] = {"ideal.torque_max_nm": {"lower": 1.0, "upper": 100.0, "start": 20.0}}
+    config["fixed"] = {**(config.get("fixed") or {}), **point}
+    path = out / f"truth_{config_path.stem}.yaml"
+    write_config(path, config)
+    run_dir = out / "runs" / f"truth_{config_path.stem}"
+    shutil.rmtree(run_dir, ignore_errors=True)
+    subprocess.run([binary, "fit", path, "--out", run_dir], check=True, stdout=subprocess.DEVNULL)
+    return json.loads((run_dir / "summary.json").read_text())["best_fitness"], point
+
+
+def run_stages(binary, out):
+    previous = None
+    for name, config in STAGES:
+        run_dir = out / "runs" / name
+        shutil.rmtree(run_dir, ignore_errors=True)
+        command = [binary, "fit", config, "--out", run_dir]
+        if previous is not None:
+            command += ["--start-from", previous / "best.json"]
+        subprocess.run([str(c) for c in command], check=True)
+        previous = run_dir
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--binary", default=str(ROOT / "build" / "motoflex"))
+    parser.add_argument("--out", default=str(ROOT / "benchmarks" / "paper_chain"))
+    parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--report-only", action="store_true")
+    args = parser.parse_args()
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    if not args.report_only:
+        run_stages(args.binary, out)
+    result = {"stages": []}
+    lines = ["| stage | logs scored | evaluations | wall s | best F | F(truth) | best / F(truth) | "
+             "validation RMS (deg) | within 5 % | identified, of them within 5 % |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    tables = []
+    for name, config in STAGES:
+        summary = json.loads((out / "runs" / name / "summary.json").read_text())
+        f_truth, point = truth_fitness(args.binary, out, config, args.threads)
+        rows = fit_speed.recovered(summary, point)
+        identified = [r for r in rows if not r["unidentified"]]
+        stage = {"stage": name, "config": str(config.relative_to(ROOT)),
+                 "evaluations": summary["evaluations"], "wall_seconds": summary["seconds"],
+                 "best_fitness": summary["best_fitness"], "truth_fitness": f_truth,
+                 "validation_rms_deg": summary.get("validation", {}).get("rms_deg", {})
+                 .get("overall"), "parameters": rows}
+        result["stages"].append(stage)
+        window = "first 2 s" if name == "short" else "whole 10 s"
+        lines.append(
+            f"| {name} | {window} | {stage['evaluations']} | {summary['seconds']:.0f} | "
+            f"{stage['best_fitness']:.4g} | {f_truth:.4g} | {stage['best_fitness'] / f_truth:.2f} | "
+            f"{stage['validation_rms_deg']:.3f} | {sum(r['within'] for r in rows)} of {len(rows)} | "
+            f"{len(identified)}, {sum(r['within'] for r in identified)} |")
+        table = [f"Stage `{name}`, per parameter:", "",
+                 "| parameter | truth | fitted | error | identified |", "|---|---|---|---|---|"]
+        for r in rows:
+            error = (f"{100 * r['relative_error']:.1f} %" if r["truth"] != 0
+                     else f"{r['relative_error']:.3g} (absolute)")
+            table.append(f"| {r['name']} | {r['truth']:.4g} | {r['fitted']:.4g} | {error} | "
+                         f"{'no' if r['unidentified'] else 'yes'} |")
+        tables.append("\n".join(table))
+    markdown = "\n".join(lines) + "\n\n" + "\n\n".join(tables) + "\n"
+    (out / "paper_chain.md").write_text(markdown)
+    (out / "paper_chain.json").write_text(json.dumps(result, indent=1))
+    print(markdown)
+
+
+if __name__ == "__main__":
+    main()
