@@ -61,9 +61,9 @@ std::pair<bool, std::string> convergence_of(const motoflex_es::RunSummary& run,
 std::string FitProgress::line() const {
   char buffer[200];
   if (polish) {
-    std::snprintf(buffer, sizeof buffer, "polish (%s): %llu evaluations, best %.6g",
+    std::snprintf(buffer, sizeof buffer, "polish (%s): %llu evaluations, best %.6g  %.1f s",
                   polish_algorithm.c_str(), static_cast<unsigned long long>(evaluations),
-                  best_fitness);
+                  best_fitness, seconds);
   } else {
     std::snprintf(buffer, sizeof buffer,
                   "gen %4llu  evals %7llu  best %.6g  median %.4g  sigma %.3g  early-stopped %llu "
@@ -209,7 +209,7 @@ void run_main_strategy(const FitConfig& config, motoflex_es::Strategy& strategy,
 // Optional local polish of the best point (NLopt keeps its state inside the library, so a
 // killed polish starts again from the main strategy's best).
 void run_polish(const FitConfig& config, const motoflex_es::Strategy& strategy, FitProblem& problem,
-                double seconds, const SessionHooks& hooks, detail::RunResult& result) {
+                const RunClock& clock, const SessionHooks& hooks, detail::RunResult& result) {
   motoflex_es::NloptOptions options;
   options.algorithm = config.strategy.polish == "sbplx" ? motoflex_es::NloptAlgorithm::kSbplx
                                                         : motoflex_es::NloptAlgorithm::kBobyqa;
@@ -232,15 +232,16 @@ void run_polish(const FitConfig& config, const motoflex_es::Strategy& strategy, 
   event.polish_algorithm = config.strategy.polish;
   event.evaluations = result.polish_evaluations;
   event.best_fitness = result.best_fitness;
-  event.seconds = seconds;
+  event.seconds = clock.now();
   hooks.report(event);
 }
 
 // The `polish: {method: lm}` finish: kept only if it lowers the fitness.
 // LM reports each iteration, stops after the iteration in which the session is cancelled, and
 // gets what is left of a `budget: {seconds}` (none left: it does not run).
-void run_lm_polish(const FitConfig& config, double seconds, const SessionHooks& hooks,
+void run_lm_polish(const FitConfig& config, const RunClock& clock, const SessionHooks& hooks,
                    detail::RunResult& result) {
+  const double seconds = clock.now();
   detail::LmPolishHooks lm_hooks;
   lm_hooks.should_stop = hooks.should_stop;
   if (config.budget.max_seconds > 0.0) {
@@ -275,7 +276,7 @@ void run_lm_polish(const FitConfig& config, double seconds, const SessionHooks& 
                            (result.lm.used ? "kept" : "not better");
   event.evaluations = result.lm.rollouts;
   event.best_fitness = result.best_fitness;
-  event.seconds = seconds;
+  event.seconds = clock.now();
   hooks.report(event);
 }
 
@@ -318,10 +319,10 @@ FitSummary FitSession::run() {
   result.best_fitness = strategy->best_fitness();
   result.best_x = strategy->best_x();
   if (!s.should_stop() && !config.strategy.polish.empty() && !result.best_x.empty()) {
-    run_polish(config, *strategy, problem, clock.now(), hooks, result);
+    run_polish(config, *strategy, problem, clock, hooks, result);
   }
   if (!s.should_stop() && config.polish.lm() && !result.best_x.empty()) {
-    run_lm_polish(config, clock.now(), hooks, result);
+    run_lm_polish(config, clock, hooks, result);
   }
   if (!s.should_stop() && config.polish.reports_uncertainty() && !result.best_x.empty()) {
     result.uncertainty = detail::fit_uncertainty(config, result.best_x);
