@@ -12,6 +12,7 @@
 
 #include "json_fields.hpp"
 #include "motoflex/core/error.hpp"
+#include "motoflex/core/number_text.hpp"
 #include "python_json.hpp"
 
 namespace motoflex {
@@ -20,7 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using Fields = detail::JsonFields;
-using detail::number_text;
 
 constexpr const char* kRobot = "servo_pendulum";
 constexpr const char* kJoint = "pendulum";

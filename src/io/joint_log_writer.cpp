@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "motoflex/core/atomic_file.hpp"
+#include "motoflex/core/number_text.hpp"
 #include "motoflex/io/joint_log.hpp"
 
 namespace motoflex {
@@ -19,12 +20,6 @@ void append_number(std::string& out, double value, int digits = 0) {
                                                  std::chars_format::general, digits)
                                  : std::to_chars(buffer, buffer + sizeof(buffer), value);
   out.append(buffer, result.ptr);
-}
-
-std::string number_text(double value) {
-  std::string text;
-  append_number(text, value);
-  return text;
 }
 
 [[noreturn]] void reject(const std::string& csv_path, const std::string& reason) {

@@ -1,20 +1,14 @@
 #include "json_fields.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include "motoflex/core/error.hpp"
+#include "motoflex/core/number_text.hpp"
 #include "python_json.hpp"
 
 namespace motoflex::detail {
 
 using nlohmann::json;
-
-std::string number_text(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return std::string(buffer, result.ptr);
-}
 
 void JsonFields::fail(const std::string& field, const std::string& message) const {
   throw InputError(file_, 0, field, message);

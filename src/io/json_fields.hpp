@@ -8,9 +8,6 @@
 
 namespace motoflex::detail {
 
-// The shortest text that reads back as `value` (std::to_chars).
-std::string number_text(double value);
-
 class JsonFields {
  public:
   explicit JsonFields(std::string file) : file_(std::move(file)) {}

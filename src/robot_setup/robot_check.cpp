@@ -3,9 +3,9 @@
 #include <filesystem>
 
 #include "motoflex/core/error_collector.hpp"
+#include "motoflex/core/number_text.hpp"
 #include "motoflex/robot_setup/robot_folder_tools.hpp"
 #include "motoflex/sim/robot_parameter_check.hpp"
-#include "number_text.hpp"
 
 namespace motoflex {
 

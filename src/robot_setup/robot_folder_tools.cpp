@@ -6,9 +6,9 @@
 #include <map>
 #include <set>
 
+#include "motoflex/core/number_text.hpp"
 #include "motoflex/model/body_kinematics.hpp"
 #include "motoflex/sim/actuator/servo_law.hpp"
-#include "number_text.hpp"
 
 namespace motoflex {
 namespace {

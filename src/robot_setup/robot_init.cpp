@@ -8,11 +8,11 @@
 
 #include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/error.hpp"
+#include "motoflex/core/number_text.hpp"
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/robot_setup/robot_folder_tools.hpp"
 #include "motoflex/sim/robot_parameter_check.hpp"
 #include "motoflex/sim/robot_parameter_defaults.hpp"
-#include "number_text.hpp"
 #include "robot_joint_plan.hpp"
 #include "robot_yaml_writer.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "number_text.hpp"
+#include "motoflex/core/number_text.hpp"
 
 namespace motoflex::detail {
 namespace {

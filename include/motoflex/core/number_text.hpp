@@ -1,6 +1,7 @@
 #pragma once
 
-// Internal to robot_setup: numbers as the shortest text that reads back as the same double.
+// Numbers as text for messages and files: the shortest text that reads back as the same double
+// (std::to_chars), or four significant digits for tables meant to be read.
 
 #include <charconv>
 #include <string>
