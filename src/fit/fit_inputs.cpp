@@ -12,7 +12,9 @@ nlohmann::ordered_json fit_inputs_json(const FitConfig& config) {
   out["strategy"] = strategy_to_json(config.strategy);
   out["budget"] = {{"generations", config.budget.max_generations},
                    {"evaluations", config.budget.max_evaluations},
-                   {"seconds", config.budget.max_seconds}};
+                   {"seconds", config.budget.max_seconds},
+                   {"stall_evaluations", config.budget.stall_evaluations},
+                   {"stall_relative", config.budget.stall_relative}};
   out["effects"] = config.effects;
   out["fitness"] = {{"m", config.fitness.m},
                     {"settle_s", config.fitness.settle_s},

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -113,6 +114,10 @@ RunDirState RunDir::resume(motoflex_es::Strategy& strategy, FitProblem& problem)
   state.main_done = extra.value("main_done", false);
   state.converged = extra.value("converged", false);
   state.convergence = extra.value("convergence", std::string());
+  if (extra.contains("stall_anchor_fitness") && extra["stall_anchor_fitness"].is_number()) {
+    state.stall_anchor_fitness = extra["stall_anchor_fitness"].get<double>();
+    state.stall_anchor_evaluations = extra.value("stall_anchor_evaluations", std::uint64_t{0});
+  }
   truncate_generations_csv(fs::path(dir_) / "generations.csv", strategy.generation());
   return state;
 }
@@ -154,6 +159,11 @@ void RunDir::write_checkpoint(const motoflex_es::Strategy& strategy, const FitPr
                       {"invalid_reasons", problem.invalid_reasons()},
                       {"seconds", seconds},
                       {"main_done", state.main_done}};
+  // JSON has no infinity: the anchor is written once a generation has set it.
+  if (std::isfinite(state.stall_anchor_fitness)) {
+    checkpoint.extra["stall_anchor_fitness"] = state.stall_anchor_fitness;
+    checkpoint.extra["stall_anchor_evaluations"] = state.stall_anchor_evaluations;
+  }
   if (state.main_done) {
     checkpoint.extra["converged"] = state.converged;
     checkpoint.extra["convergence"] = state.convergence;

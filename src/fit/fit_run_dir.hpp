@@ -4,6 +4,8 @@
 // checkpoint.json (atomic, versioned by the es library) the full state after it, run.json what
 // `resume` needs to rebuild the config.
 
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -21,6 +23,11 @@ struct RunDirState {
   bool main_done = false;       // the main strategy finished (the polish may follow)
   bool converged = false;       // how it finished (when main_done)
   std::string convergence;
+  // budget.stall_evaluations: the best fitness at the last real improvement and when it came
+  // (motoflex_es::ImprovementStall), so a resumed run stalls exactly where an uninterrupted one
+  // would. +inf before the first generation.
+  double stall_anchor_fitness = std::numeric_limits<double>::infinity();
+  std::uint64_t stall_anchor_evaluations = 0;
 };
 
 class RunDir {

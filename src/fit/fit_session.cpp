@@ -15,6 +15,7 @@
 #include "motoflex_es/checkpoint.hpp"
 #include "motoflex_es/driver.hpp"
 #include "motoflex_es/evaluator.hpp"
+#include "motoflex_es/improvement_stall.hpp"
 #include "motoflex_es/nlopt_optimizer.hpp"
 
 namespace motoflex {
@@ -54,6 +55,18 @@ std::pair<bool, std::string> convergence_of(const motoflex_es::RunSummary& run,
     default:
       return {false, "not converged: " + name};
   }
+}
+
+// Why budget.stall_evaluations stopped the strategy, in words.
+std::string stall_text(const FitBudget& budget, const motoflex_es::ImprovementStall& stall) {
+  char buffer[200];
+  std::snprintf(buffer, sizeof buffer,
+                "budget.stall_evaluations: the best fitness %.6g (after %llu evaluations) improved "
+                "by less than %g %% in %llu evaluations",
+                stall.anchor_fitness(), static_cast<unsigned long long>(stall.anchor_evaluations()),
+                100.0 * budget.stall_relative,
+                static_cast<unsigned long long>(budget.stall_evaluations));
+  return buffer;
 }
 
 }  // namespace
@@ -163,11 +176,17 @@ void run_main_strategy(const FitConfig& config, motoflex_es::Strategy& strategy,
   budget.max_generations = config.budget.max_generations;
   budget.max_evaluations = config.budget.max_evaluations;
   budget.max_seconds = config.budget.max_seconds;
+  motoflex_es::ImprovementStall stall(config.budget.stall_evaluations,
+                                      config.budget.stall_relative);
+  stall.restore(saved.stall_anchor_fitness, saved.stall_anchor_evaluations);
   motoflex_es::RunCallbacks callbacks;
   callbacks.on_generation = [&](const motoflex_es::Strategy& st,
                                 const motoflex_es::GenerationReport& report) {
     const double seconds = clock.now();
     const double sigma = detail::mean_sigma(st);
+    stall.update(report.best_fitness, report.evaluations);
+    saved.stall_anchor_fitness = stall.anchor_fitness();
+    saved.stall_anchor_evaluations = stall.anchor_evaluations();
     dir.append_generation(report, sigma, seconds);
     dir.write_checkpoint(st, problem, saved, seconds);
     FitProgress event;
@@ -179,7 +198,7 @@ void run_main_strategy(const FitConfig& config, motoflex_es::Strategy& strategy,
     event.stopped_early = problem.stopped_early();
     event.seconds = seconds;
     s.report(event);
-    return !s.should_stop();
+    return !s.should_stop() && !stall.stalled();
   };
   // The model a refit extends, before the search (a resumed run has it in its best already).
   if (!config.incumbent_x.empty() && strategy.evaluations() == 0) {
@@ -188,7 +207,10 @@ void run_main_strategy(const FitConfig& config, motoflex_es::Strategy& strategy,
   const motoflex_es::RunSummary run =
       motoflex_es::run_optimisation(strategy, problem, evaluator, budget, callbacks);
   const bool interrupted = s.should_stop();
-  const bool finished = !interrupted && run.reason == motoflex_es::RunStopReason::kStrategy;
+  const bool stalled =
+      !interrupted && run.reason == motoflex_es::RunStopReason::kCallback && stall.stalled();
+  const bool finished =
+      !interrupted && (stalled || run.reason == motoflex_es::RunStopReason::kStrategy);
   result.stop_reason =
       interrupted ? std::string("interrupted") : std::string(motoflex_es::to_string(run.reason));
   if (finished) {
@@ -196,6 +218,11 @@ void run_main_strategy(const FitConfig& config, motoflex_es::Strategy& strategy,
     if (!strategy.stop_detail().empty()) result.stop_reason += " (" + strategy.stop_detail() + ")";
   }
   std::tie(result.converged, result.convergence) = convergence_of(run, strategy, interrupted);
+  if (stalled) {
+    result.stop_reason = stall_text(config.budget, stall);
+    result.converged = true;
+    result.convergence = "converged: stall (" + result.stop_reason + ")";
+  }
   // Only a strategy that stopped by itself is finished; a budget stop can be resumed with a
   // larger budget.
   if (finished) {

@@ -5,7 +5,8 @@
 namespace motoflex {
 
 FitBudget read_budget(const YamlValue& budget) {
-  budget.require_keys_within({"generations", "evaluations", "seconds"});
+  budget.require_keys_within(
+      {"generations", "evaluations", "seconds", "stall_evaluations", "stall_relative"});
   FitBudget out;
   const auto count = [&](const char* key) {
     const int value = budget.get_int(key, 0);
@@ -16,6 +17,11 @@ FitBudget read_budget(const YamlValue& budget) {
   out.max_evaluations = count("evaluations");
   out.max_seconds = budget.get_double("seconds", 0.0);
   if (out.max_seconds < 0.0) budget.at("seconds").fail("must be >= 0 (0 = no limit)");
+  out.stall_evaluations = count("stall_evaluations");
+  out.stall_relative = budget.get_double("stall_relative", out.stall_relative);
+  if (!(out.stall_relative >= 0.0 && out.stall_relative < 1.0)) {
+    budget.at("stall_relative").fail("must be in [0, 1) (a share of the best fitness)");
+  }
   return out;
 }
 

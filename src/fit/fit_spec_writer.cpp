@@ -29,7 +29,9 @@ nlohmann::ordered_json free_json(const FreeParameterSpec& p) {
 nlohmann::ordered_json budget_json(const FitBudget& budget) {
   return {{"generations", budget.max_generations},
           {"evaluations", budget.max_evaluations},
-          {"seconds", budget.max_seconds}};
+          {"seconds", budget.max_seconds},
+          {"stall_evaluations", budget.stall_evaluations},
+          {"stall_relative", budget.stall_relative}};
 }
 
 }  // namespace

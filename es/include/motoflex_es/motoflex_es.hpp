@@ -6,6 +6,7 @@
 #include "motoflex_es/cma_es.hpp"
 #include "motoflex_es/driver.hpp"
 #include "motoflex_es/evaluator.hpp"
+#include "motoflex_es/improvement_stall.hpp"
 #include "motoflex_es/mpi_evaluator.hpp"
 #include "motoflex_es/mpi_world.hpp"
 #include "motoflex_es/mu_plus_lambda.hpp"

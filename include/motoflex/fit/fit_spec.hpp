@@ -79,6 +79,12 @@ struct FitBudget {
   std::uint64_t max_generations = 0;  // 0 = no limit
   std::uint64_t max_evaluations = 0;  // 0 = no limit
   double max_seconds = 0.0;           // 0 = no limit
+  // Stop the strategy (and go on to the polish) once the best point, the incumbent's included,
+  // has not improved by more than stall_relative of itself over stall_evaluations evaluations
+  // (motoflex_es::ImprovementStall). 0 = never. A refit that starts at the current model is
+  // where it pays: a wide CMA-ES spends its budget on samples far worse than the incumbent.
+  std::uint64_t stall_evaluations = 0;
+  double stall_relative = 1e-3;
 };
 
 // The optional least-squares finish after the strategy (the `polish:` section): Levenberg–
