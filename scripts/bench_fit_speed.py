@@ -16,9 +16,15 @@
    recovers within 5 % of the truth and the ones the data do not identify (summary.json's
    sensitivities and, with the LM polish, its intervals).
 4. The share of physics frames racing saved in that fit (summary.json's early_termination).
+5. The same problem in two stages (--fit chain or both; scripts/report_paper_chain.py's stages:
+   LM on the first 2 s of the logs, then on the whole logs from there): per stage and in total,
+   evaluations, wall time and the best fitness against F(truth) under that stage's scoring, and
+   the parameters within 5 % of the truth at the end.
 
-    scripts/bench_fit_speed.py                       # the whole benchmark (the fit: its budget)
-    scripts/bench_fit_speed.py --fit-seconds 600     # a shorter fit
+    scripts/bench_fit_speed.py                       # parts 1, 2 and the CMA-ES fit (its budget)
+    scripts/bench_fit_speed.py --fit both            # ... and the two-stage chain
+    scripts/bench_fit_speed.py --fit chain           # parts 1, 2 and the chain only
+    scripts/bench_fit_speed.py --fit-seconds 600     # a shorter CMA-ES fit
     scripts/bench_fit_speed.py --skip-fit            # parts 1 and 2 only
 
 Writes OUT/fit_speed.md and OUT/fit_speed.json (default benchmarks/fit_speed/).
@@ -213,6 +219,53 @@ def fit_paper(binary, out, threads, seconds, tolerance, floor_points, floor_scal
     }
 
 
+def fit_chain(binary, out, threads, tolerance):
+    """Runs report_paper_chain's two stages into OUT/runs/chain; see chain_result."""
+    import report_paper_chain  # imports this module: a late import keeps the cycle harmless
+    chain_dir = out / "runs" / "chain"
+    chain_dir.mkdir(parents=True, exist_ok=True)
+    report_paper_chain.run_stages(binary, chain_dir)
+    return chain_result(binary, out, threads, tolerance)
+
+
+def chain_result(binary, out, threads, tolerance):
+    """Each stage's evaluations, wall time and best fitness against F(truth) under its own
+    scoring (report_paper_chain.truth_fitness), the totals, and the final parameters."""
+    import report_paper_chain
+    chain_dir = out / "runs" / "chain"
+    stages = []
+    for name, config in report_paper_chain.STAGES:
+        summary = json.loads((chain_dir / "runs" / name / "summary.json").read_text())
+        f_truth, point = report_paper_chain.truth_fitness(binary, chain_dir, config, threads)
+        stages.append({"stage": name, "evaluations": summary["evaluations"],
+                       "seconds": summary["seconds"], "best_fitness": summary["best_fitness"],
+                       "truth_fitness": f_truth,
+                       "ratio": summary["best_fitness"] / f_truth,
+                       "parameters": recovered(summary, point)})
+    last = stages[-1]
+    return {"stages": stages, "tolerance": tolerance, "threads": threads,
+            "evaluations": sum(s["evaluations"] for s in stages),
+            "seconds": sum(s["seconds"] for s in stages),
+            "reached": last["ratio"] <= 1.0 + tolerance,
+            "within": [p["name"] for p in last["parameters"] if p["within"]],
+            "free": len(last["parameters"])}
+
+
+def chain_lines(chain):
+    lines = []
+    for stage in chain["stages"]:
+        lines.append(f"| chain, stage {stage['stage']} on {chain['threads']} threads: evaluations, "
+                     f"wall, best / F(truth) | {stage['evaluations']}, {stage['seconds']:.0f} s, "
+                     f"{stage['ratio']:.2f} |")
+    verdict = "reached" if chain["reached"] else "not reached"
+    lines += [f"| chain, total: evaluations, wall; within {100 * chain['tolerance']:g} % of "
+              f"F(truth) | {chain['evaluations']}, {chain['seconds']:.0f} s; {verdict} "
+              f"({chain['stages'][-1]['ratio']:.2f} × F(truth)) |",
+              f"| chain: within 5 % of the truth ({len(chain['within'])} of {chain['free']}) | "
+              f"{', '.join(chain['within']) or 'none'} |"]
+    return lines
+
+
 def racing_share(early):
     """Frames saved by racing as a share of the frames a full evaluation would have run."""
     saved, run = early.get("frames_saved", 0), early.get("frames_simulated", 0)
@@ -269,6 +322,10 @@ def report_lines(result):
                      f"{p['fitted'] - p['truth']:.3g} (absolute)")
             lines.append(f"| {p['name']} | {p['truth']:.4g} | {p['fitted']:.4g} | {error} | {sens} | "
                          f"{'no' if p['unidentified'] else 'yes'} |")
+    if result.get("chain"):
+        # After the measures, before the CMA-ES fit's per-parameter table.
+        table_end = next((i for i, line in enumerate(lines) if line == ""), len(lines))
+        lines[table_end:table_end] = chain_lines(result["chain"])
     return lines
 
 
@@ -287,6 +344,9 @@ def main():
     parser.add_argument("--floor-scale", type=float, default=1e-4,
                         help="their relative distance from the truth")
     parser.add_argument("--skip-fit", action="store_true")
+    parser.add_argument("--fit", choices=["cma", "chain", "both"], default="cma",
+                        help="the nao_paper fit measured: CMA-ES on the whole problem, the "
+                             "two-stage chain (report_paper_chain.py's stages), or both")
     parser.add_argument("--report-only", action="store_true",
                         help="re-read OUT/fit_speed.json and the fit's run folder and rewrite the "
                              "report, measuring nothing")
@@ -297,6 +357,9 @@ def main():
         if result.get("fit"):
             summary = json.loads((out / "runs" / "nao_paper" / "summary.json").read_text())
             result["fit"]["parameters"] = recovered(summary, truth_point(FIT, TRUTH))
+        if result.get("chain"):
+            result["chain"] = chain_result(args.binary, out, result["threads"],
+                                           result["chain"]["tolerance"])
         write_report(str(out), "fit_speed", report_lines(result), result)
         return
     (out / "runs").mkdir(parents=True, exist_ok=True)
@@ -306,9 +369,13 @@ def main():
     print(f"steps/s per core: {result['steps_per_core']}", flush=True)
     result["mujoco"] = against_mujoco(args.binary, args.repeats, out / "runs")
     print(f"against MuJoCo: {result['mujoco']}", flush=True)
-    if not args.skip_fit:
+    if not args.skip_fit and args.fit in ("cma", "both"):
         result["fit"] = fit_paper(args.binary, out, args.threads, args.fit_seconds,
                                   args.tolerance, args.floor_points, args.floor_scale)
+    if not args.skip_fit and args.fit in ("chain", "both"):
+        result["chain"] = fit_chain(args.binary, out, args.threads, args.tolerance)
+        print(f"chain: {result['chain']['evaluations']} evaluations, "
+              f"{result['chain']['seconds']:.0f} s", flush=True)
     lines = report_lines(result)
     write_report(str(out), "fit_speed", lines, result)
 

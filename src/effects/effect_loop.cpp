@@ -11,6 +11,7 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/core/folder_lock.hpp"
 #include "motoflex/effects/convergence_guard.hpp"
+#include "motoflex/effects/loop_identity.hpp"
 #include "motoflex/effects/loop_report.hpp"
 #include "motoflex/effects/refit_start_scan.hpp"
 #include "motoflex/effects/term_discovery.hpp"
@@ -354,6 +355,7 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides, 
   const LoopOptions& options = user.loop;
   const fs::path out = user.out_dir;
   const FolderLock lock(out.string());  // one loop per folder; each fit locks its own sub-folder
+  check_loop_identity(user, out.string());  // a folder resumes only the same loop
   LoopResult result;
   result.out_dir = out.string();
 
