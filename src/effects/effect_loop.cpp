@@ -355,7 +355,9 @@ LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides, 
   const LoopOptions& options = user.loop;
   const fs::path out = user.out_dir;
   const FolderLock lock(out.string());  // one loop per folder; each fit locks its own sub-folder
-  check_loop_identity(user, out.string());  // a folder resumes only the same loop
+  // A folder resumes only the same loop; another loop's files are moved aside.
+  const std::string moved = check_loop_identity(user, out.string());
+  if (!moved.empty()) std::printf("loop: %s\n", moved.c_str());
   LoopResult result;
   result.out_dir = out.string();
 

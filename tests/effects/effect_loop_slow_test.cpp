@@ -15,7 +15,6 @@
 #include "cli/cli_test_support.hpp"
 #include "effect_test_support.hpp"
 #include "fit/fit_test_support.hpp"
-#include "motoflex/core/error.hpp"
 #include "motoflex/effects/effect_loop.hpp"
 #include "motoflex/fit/fit_run.hpp"
 
@@ -97,12 +96,15 @@ TEST(HiddenEffectLoopResume, ASecondRunReusesTheFinishedFits) {
   for (const auto& [run_dir, time] : written) {
     EXPECT_EQ(fs::last_write_time(run_dir / "summary.json"), time) << run_dir;
   }
-  // Another refit budget in the same folder: refused (LoopIdentity), not the old refits reused.
+  // Another refit budget in the same folder: the old loop moves to previous-1 and the refit
+  // runs again with the new budget (LoopIdentity), instead of the old refit being reused.
   const std::string changed = write_hidden_bench_fit(
       dir, "encoder_offset",
       "{candidates: 1, max_iterations: 1, refit: {budget: {evaluations: 90}}}", "",
       "{evaluations: 120}");
-  EXPECT_THROW(run_loop(changed, {}, kForceUnconverged), InputError);
+  const LoopResult third = run_loop(changed, {}, kForceUnconverged);
+  EXPECT_NE(third.evaluations, first.evaluations);
+  EXPECT_TRUE(fs::exists(dir / "run" / "previous-1" / "loop.json"));
 }
 
 // The Nao whose thighs and tibias bend (reference_data/hidden/link_flexibility), fitted with a
