@@ -17,9 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::best_without_date;
+using testing::first_pendulum_fit;
 using testing::generations_without_seconds;
 using testing::read_text;
-using testing::record_pendulum_log;
 using testing::write_pendulum_fit;
 
 constexpr const char* kWide = "{kind: cma_es, sigma: 0.5, restarts: 0}";
@@ -41,14 +41,7 @@ std::uint64_t last_row_evaluations(const fs::path& run) {
 TEST(FitStallTest, ARefitThatCannotBeatItsIncumbentStopsOneWindowAfterTheLastImprovement) {
   const fs::path dir = fs::temp_directory_path() / "motoflex_fit_stall";
   fs::remove_all(dir);
-  record_pendulum_log(dir / "data", "clean");
-  fs::create_directories(dir / "first");
-  const std::string first_yaml = write_pendulum_fit(
-      dir / "first", dir / "data", "{kind: cma_es, sigma: 0.3, restarts: 0}", "{evaluations: 120}");
-  FitOverrides first;
-  first.out = (dir / "first" / "run").string();
-  FitSession(load_fit_config(first_yaml, first), false).run();
-  const std::string best = (dir / "first" / "run" / "best.json").string();
+  const std::string best = first_pendulum_fit(dir, 120).string();
   const double first_fitness = nlohmann::json::parse(read_text(best))["fitness"].get<double>();
 
   fs::create_directories(dir / "refit");

@@ -16,6 +16,7 @@ namespace motoflex {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::first_pendulum_fit;
 using testing::read_text;
 using testing::record_pendulum_log;
 using testing::write_pendulum_fit;
@@ -31,11 +32,7 @@ FitSummary run_fit(const std::string& fit_yaml, const fs::path& out,
 TEST(FitStartFromTest, AChainedFitStartsAtTheEarlierBestAndNeverEndsWorse) {
   const fs::path dir = fs::temp_directory_path() / "motoflex_fit_start_from";
   fs::remove_all(dir);
-  record_pendulum_log(dir / "data", "clean");
-  fs::create_directories(dir / "first");
-  const std::string first_yaml = write_pendulum_fit(
-      dir / "first", dir / "data", "{kind: cma_es, sigma: 0.3, restarts: 0}", "{evaluations: 40}");
-  run_fit(first_yaml, dir / "first" / "run");
+  first_pendulum_fit(dir, 40);
   const nlohmann::json first =
       nlohmann::json::parse(read_text(dir / "first" / "run" / "best.json"));
   const double first_fitness = first["fitness"].get<double>();

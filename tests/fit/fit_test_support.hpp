@@ -83,6 +83,20 @@ inline FitConfig pendulum_fitness_config(const std::filesystem::path& dir,
                                             "fitness: " + fitness + "\n"));
 }
 
+// A CMA-ES pendulum fit (σ 0.3, `evaluations` samples) of a clean recording in `dir`/data, run
+// into `dir`/first/run: the earlier run of a chained (`--start-from`) fit. Returns its best.json.
+inline std::filesystem::path first_pendulum_fit(const std::filesystem::path& dir, int evaluations) {
+  record_pendulum_log(dir / "data", "clean");
+  std::filesystem::create_directories(dir / "first");
+  const std::string yaml =
+      write_pendulum_fit(dir / "first", dir / "data", "{kind: cma_es, sigma: 0.3, restarts: 0}",
+                         "{evaluations: " + std::to_string(evaluations) + "}");
+  FitOverrides overrides;
+  overrides.out = (dir / "first" / "run").string();
+  FitSession(load_fit_config(yaml, overrides), false).run();
+  return dir / "first" / "run" / "best.json";
+}
+
 inline std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
