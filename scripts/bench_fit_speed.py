@@ -232,20 +232,13 @@ def chain_result(binary, out, threads, tolerance):
     """Each stage's evaluations, wall time and best fitness against F(truth) under its own
     scoring (report_paper_chain.truth_fitness), the totals, and the final parameters."""
     import report_paper_chain
-    chain_dir = out / "runs" / "chain"
-    stages = []
-    for name, config in report_paper_chain.STAGES:
-        summary = json.loads((chain_dir / "runs" / name / "summary.json").read_text())
-        f_truth, point = report_paper_chain.truth_fitness(binary, chain_dir, config, threads)
-        stages.append({"stage": name, "evaluations": summary["evaluations"],
-                       "seconds": summary["seconds"], "best_fitness": summary["best_fitness"],
-                       "truth_fitness": f_truth,
-                       "ratio": summary["best_fitness"] / f_truth,
-                       "parameters": recovered(summary, point)})
+    stages = report_paper_chain.stage_results(binary, out / "runs" / "chain", threads)
+    for stage in stages:
+        stage["ratio"] = stage["best_fitness"] / stage["truth_fitness"]
     last = stages[-1]
     return {"stages": stages, "tolerance": tolerance, "threads": threads,
             "evaluations": sum(s["evaluations"] for s in stages),
-            "seconds": sum(s["seconds"] for s in stages),
+            "seconds": sum(s["wall_seconds"] for s in stages),
             "reached": last["ratio"] <= 1.0 + tolerance,
             "within": [p["name"] for p in last["parameters"] if p["within"]],
             "free": len(last["parameters"])}
@@ -255,7 +248,7 @@ def chain_lines(chain):
     lines = []
     for stage in chain["stages"]:
         lines.append(f"| chain, stage {stage['stage']} on {chain['threads']} threads: evaluations, "
-                     f"wall, best / F(truth) | {stage['evaluations']}, {stage['seconds']:.0f} s, "
+                     f"wall, best / F(truth) | {stage['evaluations']}, {stage['wall_seconds']:.0f} s, "
                      f"{stage['ratio']:.2f} |")
     verdict = "reached" if chain["reached"] else "not reached"
     lines += [f"| chain, total: evaluations, wall; within {100 * chain['tolerance']:g} % of "

@@ -58,6 +58,22 @@ def run_stages(binary, out):
         previous = run_dir
 
 
+def stage_results(binary, out, threads):
+    """Per stage, read back from OUT/runs/<stage>: evaluations, wall time, best fitness,
+    F(truth) under the stage's own scoring, validation RMS, and each parameter against the
+    truth with the stage's identification verdict."""
+    stages = []
+    for name, config in STAGES:
+        summary = json.loads((out / "runs" / name / "summary.json").read_text())
+        f_truth, point = truth_fitness(binary, out, config, threads)
+        stages.append({"stage": name, "config": str(config.relative_to(ROOT)),
+                       "evaluations": summary["evaluations"], "wall_seconds": summary["seconds"],
+                       "best_fitness": summary["best_fitness"], "truth_fitness": f_truth,
+                       "validation_rms_deg": summary.get("validation", {}).get("rms_deg", {})
+                       .get("overall"), "parameters": fit_speed.recovered(summary, point)})
+    return stages
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--binary", default=str(ROOT / "build" / "motoflex"))
@@ -69,25 +85,17 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     if not args.report_only:
         run_stages(args.binary, out)
-    result = {"stages": []}
+    result = {"stages": stage_results(args.binary, out, args.threads)}
     lines = ["| stage | logs scored | evaluations | wall s | best F | F(truth) | best / F(truth) | "
              "validation RMS (deg) | within 5 % | identified, of them within 5 % |",
              "|---|---|---|---|---|---|---|---|---|---|"]
     tables = []
-    for name, config in STAGES:
-        summary = json.loads((out / "runs" / name / "summary.json").read_text())
-        f_truth, point = truth_fitness(args.binary, out, config, args.threads)
-        rows = fit_speed.recovered(summary, point)
+    for stage in result["stages"]:
+        name, rows, f_truth = stage["stage"], stage["parameters"], stage["truth_fitness"]
         identified = [r for r in rows if not r["unidentified"]]
-        stage = {"stage": name, "config": str(config.relative_to(ROOT)),
-                 "evaluations": summary["evaluations"], "wall_seconds": summary["seconds"],
-                 "best_fitness": summary["best_fitness"], "truth_fitness": f_truth,
-                 "validation_rms_deg": summary.get("validation", {}).get("rms_deg", {})
-                 .get("overall"), "parameters": rows}
-        result["stages"].append(stage)
         window = "first 2 s" if name == "short" else "whole 10 s"
         lines.append(
-            f"| {name} | {window} | {stage['evaluations']} | {summary['seconds']:.0f} | "
+            f"| {name} | {window} | {stage['evaluations']} | {stage['wall_seconds']:.0f} | "
             f"{stage['best_fitness']:.4g} | {f_truth:.4g} | {stage['best_fitness'] / f_truth:.2f} | "
             f"{stage['validation_rms_deg']:.3f} | {sum(r['within'] for r in rows)} of {len(rows)} | "
             f"{len(identified)}, {sum(r['within'] for r in identified)} |")

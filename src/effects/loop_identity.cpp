@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <vector>
 
 #include "motoflex/core/atomic_file.hpp"
@@ -41,17 +40,11 @@ std::string describe(const std::string& part) {
 // What changed between the stored identity and this one ("" = nothing).
 std::string changes(const fs::path& path, const nlohmann::json& parts) {
   std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json stored;
-  try {
-    stored = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception&) {
-    return "its loop_identity.json is unreadable";
-  }
+  const nlohmann::json stored = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!stored.is_object()) return "its loop_identity.json is unreadable";
   std::string out;
   for (const auto& [part, hash] : parts.items()) {
-    if (stored.is_object() && stored.contains(part) && stored[part] == hash) continue;
+    if (stored.contains(part) && stored[part] == hash) continue;
     out += (out.empty() ? "" : "; ") + describe(part);
   }
   return out;

@@ -14,8 +14,8 @@ spec.loader.exec_module(bench_fit_speed)
 
 
 def chain(ratio_last):
-    return {"stages": [{"stage": "short", "evaluations": 600, "seconds": 500.0, "ratio": 1.1},
-                       {"stage": "finish", "evaluations": 100, "seconds": 400.0,
+    return {"stages": [{"stage": "short", "evaluations": 600, "wall_seconds": 500.0, "ratio": 1.1},
+                       {"stage": "finish", "evaluations": 100, "wall_seconds": 400.0,
                         "ratio": ratio_last}],
             "tolerance": 0.05, "threads": 2, "evaluations": 700, "seconds": 900.0,
             "reached": ratio_last <= 1.05, "within": ["pid.kp_v_per_rad"], "free": 19}
