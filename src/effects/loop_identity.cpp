@@ -22,7 +22,7 @@ nlohmann::json identity_parts(const FitConfig& config) {
   const nlohmann::ordered_json spec = fit_spec_to_json(config);
   nlohmann::json parts;
   parts["format"] = 1;
-  parts["base_fit"] = hash_text(fit_identity(config).dump());
+  parts["base_fit"] = config.hash;  // FitConfig::identity, hashed when the config was loaded
   parts["budget"] = hash_text(spec["budget"].dump());
   parts["loop"] = hash_text(spec["loop"].dump());
   return parts;
