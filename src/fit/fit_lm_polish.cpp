@@ -32,31 +32,48 @@ class RolloutCost final : public ceres::CostFunction {
       std::vector<double> j;
       rollouts_ += residuals_.jacobian(x, r0, step_, j);
       std::copy(j.begin(), j.end(), jacobians[0]);
+      last_jacobian_x_ = x;
+      last_jacobian_ = std::move(j);
     }
     return true;
   }
+
+  // The last Jacobian Ceres asked for and its point (Ceres asks at each point it accepts).
+  const std::vector<double>& last_jacobian_x() const { return last_jacobian_x_; }
+  const std::vector<double>& last_jacobian() const { return last_jacobian_; }
 
  private:
   const FitResiduals& residuals_;
   double step_;
   std::atomic<std::uint64_t>& rollouts_;
+  mutable std::vector<double> last_jacobian_x_;
+  mutable std::vector<double> last_jacobian_;
 };
 
 // Reports every iteration and ends the solve when the hooks say so. Ceres's cost is ½‖r‖² and
 // ‖r‖² is the fitness (fit_residuals.hpp).
 class ProgressCallback final : public ceres::IterationCallback {
  public:
-  ProgressCallback(const LmPolishHooks& hooks, const std::atomic<std::uint64_t>& rollouts)
-      : hooks_(hooks), rollouts_(rollouts), start_(std::chrono::steady_clock::now()) {}
+  // `first_iteration`: the number reported for this run's iteration 0 (the count of earlier LM
+  // runs of this polish goes on); a later run's iteration 0, the scan's point, is reported only
+  // when `report_start`.
+  ProgressCallback(const LmPolishHooks& hooks, const std::atomic<std::uint64_t>& rollouts,
+                   std::chrono::steady_clock::time_point start, int first_iteration,
+                   bool report_start)
+      : hooks_(hooks),
+        rollouts_(rollouts),
+        start_(start),
+        first_iteration_(first_iteration),
+        report_start_(report_start) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
     // A rejected step reports the cost of the point it tried; LM stays where it was.
     if (summary.iteration == 0 || summary.step_is_successful) {
       best_fitness_ = std::min(best_fitness_, 2.0 * summary.cost);
     }
-    if (hooks_.on_iteration) {
+    if (hooks_.on_iteration && (summary.iteration > 0 || report_start_)) {
       LmIteration event;
-      event.iteration = summary.iteration;
+      event.iteration = first_iteration_ + summary.iteration;
       event.fitness = best_fitness_;
       event.rollouts = rollouts_.load();
       event.seconds =
@@ -71,8 +88,68 @@ class ProgressCallback final : public ceres::IterationCallback {
   const LmPolishHooks& hooks_;
   const std::atomic<std::uint64_t>& rollouts_;
   std::chrono::steady_clock::time_point start_;
+  int first_iteration_ = 0;
+  bool report_start_ = true;
   double best_fitness_ = std::numeric_limits<double>::infinity();
 };
+
+// One Ceres LM run from x (left at its best accepted point, clamped into the bounds) and the
+// Jacobian at that point.
+struct LmRun {
+  int iterations = 0;  // Ceres's iterations after its iteration 0
+  std::string termination;
+  std::vector<double> jacobian;  // row-major N x p at x
+};
+
+LmRun run_lm(const FitConfig& config, const FitResiduals& residuals, std::vector<double>& x,
+             int max_iterations, double max_seconds, const LmPolishHooks& hooks,
+             std::atomic<std::uint64_t>& rollouts, std::chrono::steady_clock::time_point start,
+             int first_iteration, bool report_start) {
+  ceres::Problem::Options problem_options;
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+  RolloutCost cost(residuals, config.polish.jacobian_step, rollouts);
+  problem.AddResidualBlock(&cost, nullptr, x.data());
+  const std::vector<double> lower = config.space->lower(), upper = config.space->upper();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    problem.SetParameterLowerBound(x.data(), static_cast<int>(i), lower[i]);
+    problem.SetParameterUpperBound(x.data(), static_cast<int>(i), upper[i]);
+  }
+  ceres::Solver::Options options;
+  options.minimizer_type = ceres::TRUST_REGION;
+  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = max_iterations;
+  options.num_threads = 1;  // the Jacobian's rollouts are the parallel part
+  // No projected line search at the bounds: each of its steps would cost a Jacobian (2p
+  // rollout sets); the trust region alone stays within them.
+  options.max_num_line_search_step_size_iterations = 0;
+  options.logging_type = ceres::SILENT;
+  options.minimizer_progress_to_stdout = false;
+  if (max_seconds > 0.0) options.max_solver_time_in_seconds = max_seconds;
+  ProgressCallback progress(hooks, rollouts, start, first_iteration, report_start);
+  options.callbacks.push_back(&progress);
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  LmRun run;
+  run.iterations = std::max(0, static_cast<int>(summary.iterations.size()) - 1);
+  run.termination = summary.message;
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], lower[i], upper[i]);
+  if (cost.last_jacobian_x() == x) run.jacobian = cost.last_jacobian();
+  return run;
+}
+
+// F at x as the strategy measures it (infinite where a rollout fails).
+double measured_fitness(const FitConfig& config, const std::vector<double>& x) {
+  try {
+    return config.train
+        ->evaluate(config.space->apply(x), std::numeric_limits<double>::infinity(), nullptr,
+                   config.threads)
+        .fitness;
+  } catch (const std::exception&) {
+    return std::numeric_limits<double>::infinity();
+  }
+}
 
 }  // namespace
 
@@ -88,52 +165,63 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
     return result;
   }
   std::atomic<std::uint64_t> rollouts{0};
+  const auto clock_start = std::chrono::steady_clock::now();
+  const auto seconds_left = [&] {
+    if (hooks.max_seconds <= 0.0) return 0.0;  // no limit
+    const double spent =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+    return std::max(hooks.max_seconds - spent, 1e-3);
+  };
   std::vector<double> x = start;
-  ceres::Problem::Options problem_options;
-  problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
-  ceres::Problem problem(problem_options);
-  problem.AddResidualBlock(new RolloutCost(residuals, config.polish.jacobian_step, rollouts),
-                           nullptr, x.data());
-  const std::vector<double> lower = config.space->lower(), upper = config.space->upper();
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    problem.SetParameterLowerBound(x.data(), static_cast<int>(i), lower[i]);
-    problem.SetParameterUpperBound(x.data(), static_cast<int>(i), upper[i]);
+  int iterations_left = static_cast<int>(config.polish.max_iterations);
+  // Each scan moves at least one parameter, so the rounds end; bound them all the same.
+  for (int round = 0; round <= static_cast<int>(residuals.dimension()); ++round) {
+    // result.iterations counts the reported iterations: the first run's iteration 0 and every
+    // accepted or rejected step after it.
+    const bool first_run = round == 0;
+    LmRun run = run_lm(config, residuals, x, iterations_left, seconds_left(), hooks, rollouts,
+                       clock_start, first_run ? 0 : result.iterations - 1, first_run);
+    result.iterations += run.iterations + (first_run ? 1 : 0);
+    result.termination = run.termination;
+    iterations_left -= run.iterations;
+    const double fitness = measured_fitness(config, x);
+    ++rollouts;
+    if (fitness < result.fitness_after) {
+      result.x = x;
+      result.fitness_after = fitness;
+    }
+    const bool out_of_time =
+        hooks.max_seconds > 0.0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count() >=
+            hooks.max_seconds;
+    // A scan may still move a parameter when LM has no iterations left; LM then stops.
+    if (config.polish.flat_scan == 0 || out_of_time || (hooks.should_stop && hooks.should_stop())) {
+      break;
+    }
+    // The scan starts from LM's point when LM's point is the best, with its Jacobian there.
+    if (x != result.x) break;
+    std::vector<double> jacobian = std::move(run.jacobian);
+    if (jacobian.empty()) {
+      std::vector<double> r0(residuals.size());
+      ++rollouts;
+      if (!residuals.evaluate(x, r0.data())) break;
+      rollouts += residuals.jacobian(x, r0, config.polish.jacobian_step, jacobian);
+    }
+    const std::vector<std::size_t> flat =
+        flat_columns(jacobian, residuals.size(), residuals.dimension());
+    if (flat.empty()) break;
+    FlatScanResult scan = scan_flat_directions(config, x, result.fitness_after, flat,
+                                               config.polish.flat_scan, hooks.on_scan_move);
+    rollouts += scan.rollouts;
+    if (scan.moves.empty()) break;
+    for (FlatScanMove& move : scan.moves) result.flat_scan_moves.push_back(std::move(move));
+    x = scan.x;
+    result.x = scan.x;
+    result.fitness_after = scan.fitness;
+    if (iterations_left <= 0) break;
   }
-  ceres::Solver::Options options;
-  options.minimizer_type = ceres::TRUST_REGION;
-  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = static_cast<int>(config.polish.max_iterations);
-  options.num_threads = 1;  // the Jacobian's rollouts are the parallel part
-  // No projected line search at the bounds: each of its steps would cost a Jacobian (2p
-  // rollout sets); the trust region alone stays within them.
-  options.max_num_line_search_step_size_iterations = 0;
-  options.logging_type = ceres::SILENT;
-  options.minimizer_progress_to_stdout = false;
-  if (hooks.max_seconds > 0.0) options.max_solver_time_in_seconds = hooks.max_seconds;
-  ProgressCallback progress(hooks, rollouts);
-  options.callbacks.push_back(&progress);
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
-  result.iterations = static_cast<int>(summary.iterations.size());
-  result.termination = summary.message;
-  // Ceres leaves the best accepted point in x; measure it as the strategy does.
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], lower[i], upper[i]);
-  const double no_threshold = std::numeric_limits<double>::infinity();
-  double fitness = no_threshold;
-  try {
-    fitness = config.train->evaluate(config.space->apply(x), no_threshold, nullptr, config.threads)
-                  .fitness;
-  } catch (const std::exception&) {
-    fitness = std::numeric_limits<double>::infinity();
-  }
-  ++rollouts;
   result.rollouts = rollouts.load();
-  if (fitness < start_fitness) {
-    result.x = x;
-    result.fitness_after = fitness;
-    result.used = true;
-  }
+  result.used = result.fitness_after < start_fitness;
   return result;
 }
 

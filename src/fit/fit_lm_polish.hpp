@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "flat_direction_scan.hpp"
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/parameter_covariance.hpp"
 
@@ -21,7 +22,10 @@ struct LmPolishResult {
   bool used = false;           // fitness_after < fitness_before: x replaces the best point
   std::uint64_t rollouts = 0;  // passes over all training logs (residuals and Jacobians)
   int iterations = 0;
-  std::string termination;  // Ceres's message
+  std::string termination;  // Ceres's message (of the last LM run)
+  // `polish.flat_scan`: the parameters the scans moved, in order (LM runs again after each
+  // scan that moves one, with the iterations left).
+  std::vector<FlatScanMove> flat_scan_moves;
 };
 
 // One finished LM iteration (Ceres's iteration 0 is the start point).
@@ -38,9 +42,13 @@ struct LmIteration {
 struct LmPolishHooks {
   std::function<void(const LmIteration&)> on_iteration;
   std::function<bool()> should_stop;
+  std::function<void(const FlatScanMove&)> on_scan_move;
   double max_seconds = 0.0;  // 0: no limit
 };
 
+// LM from `start` (F = `start_fitness`) within the bounds, up to polish.max_iterations
+// iterations in all; with polish.flat_scan, the parameters whose Jacobian column is zero at LM's
+// end are scanned (flat_direction_scan.hpp) and LM goes on from a scan that lowers F.
 LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& start,
                          double start_fitness, const LmPolishHooks& hooks = {});
 

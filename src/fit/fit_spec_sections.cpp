@@ -83,7 +83,8 @@ StrategyConfig read_strategy(const YamlValue& node) {
 }
 
 PolishSpec read_polish(const YamlValue& node) {
-  node.require_keys_within({"method", "max_iterations", "jacobian_step", "covariance"});
+  node.require_keys_within(
+      {"method", "max_iterations", "jacobian_step", "covariance", "flat_scan"});
   PolishSpec p;
   p.method = node.get_string("method", "lm");
   if (p.method != "lm" && p.method != "none") node.at("method").fail("expected lm or none");
@@ -95,6 +96,10 @@ PolishSpec read_polish(const YamlValue& node) {
     node.at("jacobian_step").fail("must be in (0, 0.1] (a share of the bound width)");
   }
   p.covariance = node.get_bool("covariance", p.covariance);
+  const int scan = node.get_int("flat_scan", 0);
+  if (scan < 0 || scan == 1 || scan == 2) node.at("flat_scan").fail("must be 0 (none) or >= 3");
+  if (scan > 0 && p.method != "lm") node.at("flat_scan").fail("needs method: lm");
+  p.flat_scan = static_cast<std::size_t>(scan);
   return p;
 }
 

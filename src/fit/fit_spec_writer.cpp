@@ -37,10 +37,13 @@ nlohmann::ordered_json budget_json(const FitBudget& budget) {
 }  // namespace
 
 nlohmann::ordered_json polish_to_json(const PolishSpec& p) {
-  return {{"method", p.method.empty() ? std::string("none") : p.method},
-          {"max_iterations", p.max_iterations},
-          {"jacobian_step", p.jacobian_step},
-          {"covariance", p.covariance}};
+  nlohmann::ordered_json out = {{"method", p.method.empty() ? std::string("none") : p.method},
+                                {"max_iterations", p.max_iterations},
+                                {"jacobian_step", p.jacobian_step},
+                                {"covariance", p.covariance}};
+  // Only when on, so that the identity of a fit without it is what it was before the key.
+  if (p.flat_scan > 0) out["flat_scan"] = p.flat_scan;
+  return out;
 }
 
 nlohmann::ordered_json strategy_to_json(const StrategyConfig& s) {

@@ -23,13 +23,25 @@ nlohmann::ordered_json matrix_json(const std::vector<std::string>& names,
 }
 
 nlohmann::ordered_json polish_json(const LmPolishResult& lm) {
-  return {{"method", "lm"},
-          {"iterations", lm.iterations},
-          {"evaluations", lm.rollouts},
-          {"fitness_before", number(lm.fitness_before)},
-          {"fitness_after", number(lm.fitness_after)},
-          {"used", lm.used},
-          {"termination", lm.termination}};
+  nlohmann::ordered_json out = {{"method", "lm"},
+                                {"iterations", lm.iterations},
+                                {"evaluations", lm.rollouts},
+                                {"fitness_before", number(lm.fitness_before)},
+                                {"fitness_after", number(lm.fitness_after)},
+                                {"used", lm.used},
+                                {"termination", lm.termination}};
+  if (!lm.flat_scan_moves.empty()) {
+    nlohmann::ordered_json moves = nlohmann::ordered_json::array();
+    for (const FlatScanMove& m : lm.flat_scan_moves) {
+      moves.push_back({{"parameter", m.parameter},
+                       {"from", m.from},
+                       {"to", m.to},
+                       {"fitness_before", number(m.fitness_before)},
+                       {"fitness_after", number(m.fitness_after)}});
+    }
+    out["flat_scan_moves"] = std::move(moves);
+  }
+  return out;
 }
 
 // Intervals in model units: the search interval x ± z·s mapped through to_model (monotone), the

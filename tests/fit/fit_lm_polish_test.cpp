@@ -53,17 +53,22 @@ TEST(FitLmPolishTest, ADirectionTheDataCannotSeeHasNoFiniteVariance) {
 
 // A fit of the four bench parameters from 15 % off the truth, the strategy given almost no
 // budget, so that LM does the work.
+// `friction` replaces the friction's range and start ("" keeps 0.001..0.5 from 15 % off).
 std::string write_fit(const fs::path& dir, const fs::path& data, const std::string& polish,
-                      const std::string& budget = "{evaluations: 16}") {
+                      const std::string& budget = "{evaluations: 16}",
+                      const std::string& friction = "") {
   const auto truth = pendulum_truth();
   const auto start = [&](const char* name) { return std::to_string(1.15 * truth.at(name)); };
+  const std::string friction_range =
+      friction.empty()
+          ? "lower: 0.001, upper: 0.5, log: true, start: " + start("joint.pendulum.friction_nm")
+          : friction;
   const std::string path = (dir / "fit.yaml").string();
   std::ofstream(path) << "name: lm\nscenario: " << testing::kPendulumScenario << "\n"
                       << "data: " << data.string() << "\nfree:\n"
                       << "  bench.Kt_nm_per_a: {lower: 0.1, upper: 3.0, log: true, start: "
                       << start("bench.Kt_nm_per_a") << "}\n"
-                      << "  joint.pendulum.friction_nm: {lower: 0.001, upper: 0.5, log: true, "
-                      << "start: " << start("joint.pendulum.friction_nm") << "}\n"
+                      << "  joint.pendulum.friction_nm: {" << friction_range << "}\n"
                       << "  joint.pendulum.viscous_nm_s_per_rad: {lower: 0.001, upper: 1.0, "
                       << "log: true, start: " << start("joint.pendulum.viscous_nm_s_per_rad")
                       << "}\n"
@@ -204,6 +209,56 @@ TEST(FitLmPolishTest, ThePolishSectionIsCheckedAndRoundTrips) {
   EXPECT_EQ(json["polish"]["method"], "lm");
   EXPECT_EQ(json["polish"]["max_iterations"], 7);
   EXPECT_FALSE(fit_spec_to_json(load_fit_spec(write_fit(dir, dir, ""))).contains("polish"));
+  // The flat-direction scan needs at least three points and LM.
+  EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {flat_scan: 2}\n")), InputError);
+  EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {method: none, flat_scan: 5}\n")),
+               InputError);
+  const FitSpec scanned = load_fit_spec(write_fit(dir, dir, "polish: {flat_scan: 5}\n"));
+  EXPECT_EQ(scanned.polish.flat_scan, 5u);
+  EXPECT_EQ(fit_spec_to_json(scanned)["polish"]["flat_scan"], 5);
+  EXPECT_FALSE(fit_spec_to_json(spec)["polish"].contains("flat_scan"));  // hashes unchanged
+  fs::remove_all(dir);
+}
+
+// A dry friction far above what the servo can push through locks the joint: no small change of
+// it changes a rollout, its Jacobian column is zero and LM cannot move it. The flat-direction
+// scan tries it across its bounds, finds where the joint moves again, and LM goes on from there
+// to the truth. The strategy is given almost no budget (16 evaluations at σ = 0.001), so the
+// start is what LM gets.
+TEST(FitLmPolishTest, AFlatScanFreesALockedFrictionThatLmAloneCannotMove) {
+  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_flat_scan";
+  fs::remove_all(dir);
+  record_pendulum_log(dir / "data", "clean");
+  const std::string locked = "lower: 0.001, upper: 50.0, log: true, start: 50.0";
+  const auto fit = [&](const std::string& name, const std::string& polish) {
+    FitOverrides overrides;
+    overrides.out = (dir / name).string();
+    FitSession(load_fit_config(write_fit(dir, dir / "data", polish, "{evaluations: 16}", locked),
+                               overrides),
+               false)
+        .run();
+    return nlohmann::json::parse(read_text(dir / name / "summary.json"));
+  };
+  const std::string name = "joint.pendulum.friction_nm";
+  const double truth = pendulum_truth().at(name);
+  const nlohmann::json alone = fit("alone", "polish: {method: lm, max_iterations: 30}\n");
+  const nlohmann::json scanned =
+      fit("scanned", "polish: {method: lm, max_iterations: 30, flat_scan: 9}\n");
+  std::printf("[ flat     ] LM alone: friction %.6g N m, F %.6g; with the scan: %.6g N m, F %.6g\n",
+              alone["free"][name].get<double>(), alone["polish"]["fitness_after"].get<double>(),
+              scanned["free"][name].get<double>(),
+              scanned["polish"]["fitness_after"].get<double>());
+  // LM alone leaves the friction where it locks the joint.
+  EXPECT_GT(alone["free"][name].get<double>(), 10.0 * truth);
+  // The scan moves it, and LM then takes every parameter to within 1 % of the truth.
+  ASSERT_TRUE(scanned["polish"].contains("flat_scan_moves"));
+  EXPECT_GE(scanned["polish"]["flat_scan_moves"].size(), 1u);
+  for (const auto& [parameter, value] : pendulum_truth()) {
+    if (!scanned["free"].contains(parameter)) continue;
+    EXPECT_NEAR(scanned["free"][parameter].get<double>(), value, 0.01 * value) << parameter;
+  }
+  EXPECT_LT(scanned["polish"]["fitness_after"].get<double>(),
+            1e-3 * alone["polish"]["fitness_after"].get<double>());
   fs::remove_all(dir);
 }
 

@@ -99,6 +99,10 @@ struct PolishSpec {
   std::size_t max_iterations = 20;  // LM iterations (each: one Jacobian, 2p rollouts of all logs)
   double jacobian_step = 1e-3;      // finite-difference step, share of each bound width
   bool covariance = true;           // uncertainty at the best point (default on with lm)
+  // Points per parameter of the scan along the parameters LM cannot move (zero Jacobian column)
+  // after LM ends, LM going on from a scan that lowers F (flat_direction_scan.hpp); 0: none,
+  // else >= 3.
+  std::size_t flat_scan = 0;
   bool lm() const { return method == "lm"; }
   bool reports_uncertainty() const { return covariance && (lm() || method == "none"); }
 };
