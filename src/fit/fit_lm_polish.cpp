@@ -174,7 +174,7 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
   };
   std::vector<double> x = start;
   int iterations_left = static_cast<int>(config.polish.max_iterations);
-  // Each scan moves at least one parameter, so the rounds end; bound them all the same.
+  // Each scan moves one parameter and lowers F, so the rounds end; bound them all the same.
   for (int round = 0; round <= static_cast<int>(residuals.dimension()); ++round) {
     // result.iterations counts the reported iterations: the first run's iteration 0 and every
     // accepted or rejected step after it.
@@ -210,11 +210,14 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
     const std::vector<std::size_t> flat =
         flat_columns(jacobian, residuals.size(), residuals.dimension());
     if (flat.empty()) break;
-    FlatScanResult scan = scan_flat_directions(config, x, result.fitness_after, flat,
-                                               config.polish.flat_scan, hooks.on_scan_move);
+    FlatScanResult scan =
+        scan_flat_directions(config, x, result.fitness_after, flat, config.polish.flat_scan);
     rollouts += scan.rollouts;
     if (scan.moves.empty()) break;
-    for (FlatScanMove& move : scan.moves) result.flat_scan_moves.push_back(std::move(move));
+    for (FlatScanMove& move : scan.moves) {
+      if (hooks.on_scan_move) hooks.on_scan_move(move, rollouts.load());
+      result.flat_scan_moves.push_back(std::move(move));
+    }
     x = scan.x;
     result.x = scan.x;
     result.fitness_after = scan.fitness;

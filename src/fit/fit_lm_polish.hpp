@@ -42,13 +42,15 @@ struct LmIteration {
 struct LmPolishHooks {
   std::function<void(const LmIteration&)> on_iteration;
   std::function<bool()> should_stop;
-  std::function<void(const FlatScanMove&)> on_scan_move;
+  // A flat scan's move, with the passes over the logs the polish has made so far.
+  std::function<void(const FlatScanMove&, std::uint64_t rollouts)> on_scan_move;
   double max_seconds = 0.0;  // 0: no limit
 };
 
 // LM from `start` (F = `start_fitness`) within the bounds, up to polish.max_iterations
 // iterations in all; with polish.flat_scan, the parameters whose Jacobian column is zero at LM's
-// end are scanned (flat_direction_scan.hpp) and LM goes on from a scan that lowers F.
+// end are scanned (flat_direction_scan.hpp) and LM goes on from a scan that lowers F, until no
+// column is flat, no scan helps or the iterations are spent.
 LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& start,
                          double start_fitness, const LmPolishHooks& hooks = {});
 

@@ -290,12 +290,13 @@ void run_lm_polish(const FitConfig& config, const RunClock& clock, const Session
     event.seconds = seconds + step.seconds;
     hooks.report(event);
   };
-  lm_hooks.on_scan_move = [&](const detail::FlatScanMove& move) {
+  lm_hooks.on_scan_move = [&](const detail::FlatScanMove& move, std::uint64_t rollouts) {
     FitProgress event;
     event.polish = true;
     char values[64];
     std::snprintf(values, sizeof values, " %.4g -> %.4g", move.from, move.to);
     event.polish_algorithm = "flat scan: " + move.parameter + values;
+    event.evaluations = rollouts;
     event.best_fitness = move.fitness_after;
     event.seconds = clock.now();
     hooks.report(event);

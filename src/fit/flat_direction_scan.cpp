@@ -31,16 +31,40 @@ std::vector<std::size_t> flat_columns(const std::vector<double>& jacobian, std::
   return flat;
 }
 
+FlatLineMove best_flat_line_move(const std::vector<double>& lower, const std::vector<double>& upper,
+                                 const std::vector<double>& x, double fitness,
+                                 const std::vector<std::size_t>& flat, std::size_t points,
+                                 const std::function<double(const std::vector<double>&)>& measure) {
+  if (points < 3) throw std::invalid_argument("best_flat_line_move: points must be >= 3");
+  FlatLineMove best;
+  best.fitness = fitness;
+  for (const std::size_t i : flat) {
+    if (i >= x.size() || i >= lower.size() || i >= upper.size()) {
+      throw std::invalid_argument("best_flat_line_move: a flat index is out of range");
+    }
+    std::vector<double> trial = x;
+    for (std::size_t k = 0; k < points; ++k) {
+      const double share = static_cast<double>(k) / static_cast<double>(points - 1);
+      trial[i] = k + 1 == points ? upper[i] : lower[i] + share * (upper[i] - lower[i]);
+      if (trial[i] == x[i]) continue;  // F there is known
+      const double f = measure(trial);
+      ++best.evaluations;
+      if (f < best.fitness) {
+        best.found = true;
+        best.index = i;
+        best.value = trial[i];
+        best.fitness = f;
+      }
+    }
+  }
+  return best;
+}
+
 FlatScanResult scan_flat_directions(const FitConfig& config, const std::vector<double>& x,
                                     double fitness, const std::vector<std::size_t>& flat,
-                                    std::size_t points,
-                                    const std::function<void(const FlatScanMove&)>& on_move) {
-  if (points < 3) throw std::invalid_argument("scan_flat_directions: points must be >= 3");
+                                    std::size_t points) {
   const ParameterSpace& space = *config.space;
-  const std::vector<double> lower = space.lower(), upper = space.upper();
-  FlatScanResult out{x, fitness, {}, 0};
   const auto measure = [&](const std::vector<double>& at) {
-    ++out.rollouts;
     try {
       return config.train
           ->evaluate(space.apply(at), std::numeric_limits<double>::infinity(), nullptr,
@@ -50,27 +74,15 @@ FlatScanResult scan_flat_directions(const FitConfig& config, const std::vector<d
       return std::numeric_limits<double>::infinity();
     }
   };
-  for (const std::size_t i : flat) {
-    std::vector<double> trial = out.x;
-    double best_value = out.x[i], best_fitness = out.fitness;
-    for (std::size_t k = 0; k < points; ++k) {
-      const double share = static_cast<double>(k) / static_cast<double>(points - 1);
-      trial[i] = k + 1 == points ? upper[i] : lower[i] + share * (upper[i] - lower[i]);
-      if (trial[i] == out.x[i]) continue;  // F there is known
-      const double f = measure(trial);
-      if (f < best_fitness) {
-        best_fitness = f;
-        best_value = trial[i];
-      }
-    }
-    if (best_value == out.x[i]) continue;
-    FlatScanMove move{space.free_parameters()[i].name, space.to_model(i, out.x[i]),
-                      space.to_model(i, best_value), out.fitness, best_fitness};
-    out.x[i] = best_value;
-    out.fitness = best_fitness;
-    if (on_move) on_move(move);
-    out.moves.push_back(std::move(move));
-  }
+  const FlatLineMove best =
+      best_flat_line_move(space.lower(), space.upper(), x, fitness, flat, points, measure);
+  FlatScanResult out{x, fitness, {}, best.evaluations};
+  if (!best.found) return out;
+  out.moves.push_back({space.free_parameters()[best.index].name,
+                       space.to_model(best.index, x[best.index]),
+                       space.to_model(best.index, best.value), fitness, best.fitness});
+  out.x[best.index] = best.value;
+  out.fitness = best.fitness;
   return out;
 }
 

@@ -6,8 +6,11 @@
 // even when the fitness is lower elsewhere on that line: nao_paper's first stage ended with the
 // flex joints' friction at its upper bound, locking them, where F on the first 2 s was 4 % above
 // its value with the friction near zero. Each such parameter is tried at N evenly spaced points
-// across its bounds (the strategy's coordinates, log where it searches so), the others held,
-// one parameter after the other, and moved to its best point when that lowers F.
+// across its bounds (the strategy's coordinates, log where it searches so), the others held, all
+// from the same point; only the one move that lowers F most is made. A locked joint makes its
+// companions flat too (the locked flex joints' spring does nothing), and where F moves along
+// them it moves by noise: moving them with the lock would park them at arbitrary values. Once
+// the lock is gone LM sees them again, and the next scan looks at what is still flat.
 
 #include <cstdint>
 #include <functional>
@@ -23,7 +26,21 @@ namespace motoflex::detail {
 std::vector<std::size_t> flat_columns(const std::vector<double>& jacobian, std::size_t rows,
                                       std::size_t columns, double relative = 1e-9);
 
-// One parameter the scan moved.
+// The best single move along one of `flat` (indices into x): each is tried at `points` (>= 3)
+// values from lower[i] to upper[i], the other coordinates held at x, with F(x) = `fitness`.
+struct FlatLineMove {
+  bool found = false;     // some point lowered F
+  std::size_t index = 0;  // which coordinate
+  double value = 0.0;     // its new value (search coordinates)
+  double fitness = 0.0;   // F there
+  std::uint64_t evaluations = 0;
+};
+FlatLineMove best_flat_line_move(const std::vector<double>& lower, const std::vector<double>& upper,
+                                 const std::vector<double>& x, double fitness,
+                                 const std::vector<std::size_t>& flat, std::size_t points,
+                                 const std::function<double(const std::vector<double>&)>& measure);
+
+// The parameter the scan moved.
 struct FlatScanMove {
   std::string parameter;
   double from = 0.0;  // model units
@@ -33,17 +50,15 @@ struct FlatScanMove {
 };
 
 struct FlatScanResult {
-  std::vector<double> x;  // search coordinates
-  double fitness = 0.0;   // F at x, measured as the strategy measures it
-  std::vector<FlatScanMove> moves;
-  std::uint64_t rollouts = 0;  // passes over all training logs
+  std::vector<double> x;            // search coordinates
+  double fitness = 0.0;             // F at x, measured as the strategy measures it
+  std::vector<FlatScanMove> moves;  // none or one
+  std::uint64_t rollouts = 0;       // passes over all training logs
 };
 
-// Scans each of `flat` (indices into x) at `points` (>= 3) values from its lower to its upper
-// bound, from x with fitness F(x) = `fitness`. `on_move` hears each move as it is made.
+// best_flat_line_move on the fit's training logs, F measured as the strategy measures it.
 FlatScanResult scan_flat_directions(const FitConfig& config, const std::vector<double>& x,
                                     double fitness, const std::vector<std::size_t>& flat,
-                                    std::size_t points,
-                                    const std::function<void(const FlatScanMove&)>& on_move = {});
+                                    std::size_t points);
 
 }  // namespace motoflex::detail
