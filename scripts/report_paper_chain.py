@@ -70,8 +70,16 @@ def stage_results(binary, out, threads):
                        "evaluations": summary["evaluations"], "wall_seconds": summary["seconds"],
                        "best_fitness": summary["best_fitness"], "truth_fitness": f_truth,
                        "validation_rms_deg": summary.get("validation", {}).get("rms_deg", {})
-                       .get("overall"), "parameters": fit_speed.recovered(summary, point)})
+                       .get("overall"), "parameters": fit_speed.recovered(summary, point),
+                       "flat_scan_moves": summary.get("polish", {}).get("flat_scan_moves", [])})
     return stages
+
+
+def flat_scan_text(moves):
+    """The LM polish's flat-scan moves (summary.json polish.flat_scan_moves) for a table cell."""
+    if not moves:
+        return "none"
+    return "; ".join(f"{m['parameter']} {m['from']:.4g} → {m['to']:.4g}" for m in moves)
 
 
 def main():
@@ -87,8 +95,9 @@ def main():
         run_stages(args.binary, out)
     result = {"stages": stage_results(args.binary, out, args.threads)}
     lines = ["| stage | logs scored | evaluations | wall s | best F | F(truth) | best / F(truth) | "
-             "validation RMS (deg) | within 5 % | identified, of them within 5 % |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "validation RMS (deg) | within 5 % | identified, of them within 5 % | "
+             "flat-scan moves |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     tables = []
     for stage in result["stages"]:
         name, rows, f_truth = stage["stage"], stage["parameters"], stage["truth_fitness"]
@@ -98,7 +107,8 @@ def main():
             f"| {name} | {window} | {stage['evaluations']} | {stage['wall_seconds']:.0f} | "
             f"{stage['best_fitness']:.4g} | {f_truth:.4g} | {stage['best_fitness'] / f_truth:.2f} | "
             f"{stage['validation_rms_deg']:.3f} | {sum(r['within'] for r in rows)} of {len(rows)} | "
-            f"{len(identified)}, {sum(r['within'] for r in identified)} |")
+            f"{len(identified)}, {sum(r['within'] for r in identified)} | "
+            f"{flat_scan_text(stage.get('flat_scan_moves', []))} |")
         table = [f"Stage `{name}`, per parameter:", "",
                  "| parameter | truth | fitted | error | identified |", "|---|---|---|---|---|"]
         for r in rows:
