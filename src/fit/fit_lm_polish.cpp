@@ -210,14 +210,13 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
     const std::vector<std::size_t> flat =
         flat_columns(jacobian, residuals.size(), residuals.dimension());
     if (flat.empty()) break;
-    FlatScanResult scan =
-        scan_flat_directions(config, x, result.fitness_after, flat, config.polish.flat_scan);
+    FlatScanResult scan = scan_flat_directions(
+        *config.space, x, result.fitness_after, flat, config.polish.flat_scan,
+        [&config](const std::vector<double>& at) { return measured_fitness(config, at); });
     rollouts += scan.rollouts;
-    if (scan.moves.empty()) break;
-    for (FlatScanMove& move : scan.moves) {
-      if (hooks.on_scan_move) hooks.on_scan_move(move, rollouts.load());
-      result.flat_scan_moves.push_back(std::move(move));
-    }
+    if (!scan.move) break;
+    if (hooks.on_scan_move) hooks.on_scan_move(*scan.move, rollouts.load());
+    result.flat_scan_moves.push_back(std::move(*scan.move));
     x = scan.x;
     result.x = scan.x;
     result.fitness_after = scan.fitness;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace motoflex::detail {
@@ -34,7 +33,7 @@ std::vector<std::size_t> flat_columns(const std::vector<double>& jacobian, std::
 FlatLineMove best_flat_line_move(const std::vector<double>& lower, const std::vector<double>& upper,
                                  const std::vector<double>& x, double fitness,
                                  const std::vector<std::size_t>& flat, std::size_t points,
-                                 const std::function<double(const std::vector<double>&)>& measure) {
+                                 const FitnessAt& measure) {
   if (points < 3) throw std::invalid_argument("best_flat_line_move: points must be >= 3");
   FlatLineMove best;
   best.fitness = fitness;
@@ -60,27 +59,16 @@ FlatLineMove best_flat_line_move(const std::vector<double>& lower, const std::ve
   return best;
 }
 
-FlatScanResult scan_flat_directions(const FitConfig& config, const std::vector<double>& x,
+FlatScanResult scan_flat_directions(const ParameterSpace& space, const std::vector<double>& x,
                                     double fitness, const std::vector<std::size_t>& flat,
-                                    std::size_t points) {
-  const ParameterSpace& space = *config.space;
-  const auto measure = [&](const std::vector<double>& at) {
-    try {
-      return config.train
-          ->evaluate(space.apply(at), std::numeric_limits<double>::infinity(), nullptr,
-                     config.threads)
-          .fitness;
-    } catch (const std::exception&) {
-      return std::numeric_limits<double>::infinity();
-    }
-  };
+                                    std::size_t points, const FitnessAt& measure) {
   const FlatLineMove best =
       best_flat_line_move(space.lower(), space.upper(), x, fitness, flat, points, measure);
-  FlatScanResult out{x, fitness, {}, best.evaluations};
+  FlatScanResult out{x, fitness, std::nullopt, best.evaluations};
   if (!best.found) return out;
-  out.moves.push_back({space.free_parameters()[best.index].name,
-                       space.to_model(best.index, x[best.index]),
-                       space.to_model(best.index, best.value), fitness, best.fitness});
+  out.move = FlatScanMove{space.free_parameters()[best.index].name,
+                          space.to_model(best.index, x[best.index]),
+                          space.to_model(best.index, best.value), fitness, best.fitness};
   out.x[best.index] = best.value;
   out.fitness = best.fitness;
   return out;

@@ -14,10 +14,11 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "motoflex/fit/fit_config.hpp"
+#include "motoflex/fit/parameter_space.hpp"
 
 namespace motoflex::detail {
 
@@ -25,6 +26,9 @@ namespace motoflex::detail {
 // `relative` times the largest column's (all of them when every column is zero).
 std::vector<std::size_t> flat_columns(const std::vector<double>& jacobian, std::size_t rows,
                                       std::size_t columns, double relative = 1e-9);
+
+// F at a point in search coordinates (infinite where a rollout fails).
+using FitnessAt = std::function<double(const std::vector<double>&)>;
 
 // The best single move along one of `flat` (indices into x): each is tried at `points` (>= 3)
 // values from lower[i] to upper[i], the other coordinates held at x, with F(x) = `fitness`.
@@ -38,7 +42,7 @@ struct FlatLineMove {
 FlatLineMove best_flat_line_move(const std::vector<double>& lower, const std::vector<double>& upper,
                                  const std::vector<double>& x, double fitness,
                                  const std::vector<std::size_t>& flat, std::size_t points,
-                                 const std::function<double(const std::vector<double>&)>& measure);
+                                 const FitnessAt& measure);
 
 // The parameter the scan moved.
 struct FlatScanMove {
@@ -50,15 +54,15 @@ struct FlatScanMove {
 };
 
 struct FlatScanResult {
-  std::vector<double> x;            // search coordinates
-  double fitness = 0.0;             // F at x, measured as the strategy measures it
-  std::vector<FlatScanMove> moves;  // none or one
-  std::uint64_t rollouts = 0;       // passes over all training logs
+  std::vector<double> x;             // search coordinates
+  double fitness = 0.0;              // F at x, as `measure` gives it
+  std::optional<FlatScanMove> move;  // none when no point lowered F
+  std::uint64_t rollouts = 0;        // passes over all training logs
 };
 
-// best_flat_line_move on the fit's training logs, F measured as the strategy measures it.
-FlatScanResult scan_flat_directions(const FitConfig& config, const std::vector<double>& x,
+// best_flat_line_move within the bounds of `space`, the move named in model units.
+FlatScanResult scan_flat_directions(const ParameterSpace& space, const std::vector<double>& x,
                                     double fitness, const std::vector<std::size_t>& flat,
-                                    std::size_t points);
+                                    std::size_t points, const FitnessAt& measure);
 
 }  // namespace motoflex::detail
