@@ -13,11 +13,12 @@ namespace motoflex::detail {
 namespace {
 
 // The residual block of the whole fit: one parameter block (the p search coordinates), N
-// residuals; the Jacobian by central differences through the rollout.
+// residuals; the Jacobian by finite differences through the rollout (`polish.jacobian`).
 class RolloutCost final : public ceres::CostFunction {
  public:
-  RolloutCost(const FitResiduals& residuals, double step, std::atomic<std::uint64_t>& rollouts)
-      : residuals_(residuals), step_(step), rollouts_(rollouts) {
+  RolloutCost(const FitResiduals& residuals, double step, FiniteDifferences scheme,
+              std::atomic<std::uint64_t>& rollouts)
+      : residuals_(residuals), step_(step), scheme_(scheme), rollouts_(rollouts) {
     set_num_residuals(static_cast<int>(residuals.size()));
     mutable_parameter_block_sizes()->push_back(static_cast<std::int32_t>(residuals.dimension()));
   }
@@ -30,7 +31,7 @@ class RolloutCost final : public ceres::CostFunction {
     if (jacobians != nullptr && jacobians[0] != nullptr) {
       const std::vector<double> r0(out, out + n);
       std::vector<double> j;
-      rollouts_ += residuals_.jacobian(x, r0, step_, j);
+      rollouts_ += residuals_.jacobian(x, r0, step_, j, scheme_);
       std::copy(j.begin(), j.end(), jacobians[0]);
       last_jacobian_x_ = x;
       last_jacobian_ = std::move(j);
@@ -45,6 +46,7 @@ class RolloutCost final : public ceres::CostFunction {
  private:
   const FitResiduals& residuals_;
   double step_;
+  FiniteDifferences scheme_;
   std::atomic<std::uint64_t>& rollouts_;
   mutable std::vector<double> last_jacobian_x_;
   mutable std::vector<double> last_jacobian_;
@@ -108,7 +110,7 @@ LmRun run_lm(const FitConfig& config, const FitResiduals& residuals, std::vector
   ceres::Problem::Options problem_options;
   problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
-  RolloutCost cost(residuals, config.polish.jacobian_step, rollouts);
+  RolloutCost cost(residuals, config.polish.jacobian_step, config.polish.lm_jacobian, rollouts);
   problem.AddResidualBlock(&cost, nullptr, x.data());
   const std::vector<double> lower = config.space->lower(), upper = config.space->upper();
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -205,7 +207,8 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
       std::vector<double> r0(residuals.size());
       ++rollouts;
       if (!residuals.evaluate(x, r0.data())) break;
-      rollouts += residuals.jacobian(x, r0, config.polish.jacobian_step, jacobian);
+      rollouts += residuals.jacobian(x, r0, config.polish.jacobian_step, jacobian,
+                                     config.polish.lm_jacobian);
     }
     const std::vector<std::size_t> flat =
         flat_columns(jacobian, residuals.size(), residuals.dimension());

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "motoflex/fit/fit_config.hpp"
+#include "motoflex/fit/fit_spec.hpp"
 
 namespace motoflex::detail {
 
@@ -28,14 +29,22 @@ class FitResiduals {
   // residuals are then not comparable).
   bool evaluate(const std::vector<double>& x, double* out) const;
 
-  // The central finite-difference Jacobian at x (row-major N × p): column i from x ± h_i e_i,
-  // h_i = step · (upper_i − lower_i); one-sided (with r(x) = `r0`) where x ± h_i leaves the
-  // bounds or its rollout fails; a zero column where neither side works. Returns the rollout
-  // sets simulated (each a pass over all logs).
+  // The finite-difference Jacobian at x (row-major N × p), h_i = step · (upper_i − lower_i).
+  // Central: column i from x ± h_i e_i; one-sided (with r(x) = `r0`) where x ± h_i leaves the
+  // bounds or its rollout fails. Forward: column i from x + h_i e_i and `r0`, or from x − h_i e_i
+  // where x + h_i leaves the bounds or its rollout fails (a second pass over those columns
+  // only). Either way a zero column where neither side works. Returns the rollout sets
+  // simulated (each a pass over all logs).
   std::uint64_t jacobian(const std::vector<double>& x, const std::vector<double>& r0, double step,
-                         std::vector<double>& out) const;
+                         std::vector<double>& out,
+                         FiniteDifferences scheme = FiniteDifferences::kCentral) const;
 
  private:
+  // r at each point into `r` (`ok`: the rollouts completed), the points in parallel; returns
+  // the rollout sets simulated.
+  std::uint64_t evaluate_points(const std::vector<std::vector<double>>& points,
+                                std::vector<std::vector<double>>& r, std::vector<char>& ok) const;
+
   const FitConfig& config_;
   int threads_;
   std::size_t size_ = 0;

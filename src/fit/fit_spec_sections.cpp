@@ -84,7 +84,7 @@ StrategyConfig read_strategy(const YamlValue& node) {
 
 PolishSpec read_polish(const YamlValue& node) {
   node.require_keys_within(
-      {"method", "max_iterations", "jacobian_step", "covariance", "flat_scan"});
+      {"method", "max_iterations", "jacobian", "jacobian_step", "covariance", "flat_scan"});
   PolishSpec p;
   p.method = node.get_string("method", "lm");
   if (p.method != "lm" && p.method != "none") node.at("method").fail("expected lm or none");
@@ -94,6 +94,15 @@ PolishSpec read_polish(const YamlValue& node) {
   p.jacobian_step = node.get_double("jacobian_step", p.jacobian_step);
   if (!(p.jacobian_step > 0.0 && p.jacobian_step <= 0.1)) {
     node.at("jacobian_step").fail("must be in (0, 0.1] (a share of the bound width)");
+  }
+  const std::string jacobian = node.get_string("jacobian", "central");
+  if (jacobian == "forward") {
+    p.lm_jacobian = FiniteDifferences::kForward;
+  } else if (jacobian != "central") {
+    node.at("jacobian").fail("expected central or forward");
+  }
+  if (p.lm_jacobian == FiniteDifferences::kForward && p.method != "lm") {
+    node.at("jacobian").fail("needs method: lm");
   }
   p.covariance = node.get_bool("covariance", p.covariance);
   const int scan = node.get_int("flat_scan", 0);

@@ -43,6 +43,7 @@ nlohmann::ordered_json polish_to_json(const PolishSpec& p) {
                                 {"covariance", p.covariance}};
   // Only when on, so that the identity of a fit without it is what it was before the key.
   if (p.flat_scan > 0) out["flat_scan"] = p.flat_scan;
+  if (p.lm_jacobian == FiniteDifferences::kForward) out["jacobian"] = "forward";
   return out;
 }
 

@@ -10,7 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "fit_test_support.hpp"
 #include "motoflex/core/error.hpp"
@@ -131,6 +133,51 @@ TEST(FitLmPolishTest, LmRecoversTheTruthAndItsIntervalsCoverIt) {
   fs::remove_all(dir);
 }
 
+// `jacobian: forward` spends p rollout sets on a Jacobian instead of central differences' 2p:
+// on the same noisy logs and from the same start LM still recovers the truth to 1 %, and no
+// iteration costs more than p + 1 rollout sets (a Jacobian and the point itself; a rejected
+// step costs one), where central differences need up to 2p + 1.
+TEST(FitLmPolishTest, ForwardDifferencesRecoverTheTruthWithHalfTheRolloutsPerJacobian) {
+  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_forward";
+  fs::remove_all(dir);
+  record_pendulum_log(dir / "data", "noisy", {{"sensor.noise_rad", 1e-3}}, 5);
+  std::map<std::string, nlohmann::json> polish;
+  for (const std::string scheme : {"central", "forward"}) {
+    FitOverrides overrides;
+    overrides.out = (dir / scheme).string();
+    FitSession(
+        load_fit_config(
+            write_fit(dir, dir / "data",
+                      "polish: {method: lm, max_iterations: 30, jacobian: " + scheme + "}\n"),
+            overrides),
+        false)
+        .run();
+    const nlohmann::json json = nlohmann::json::parse(read_text(dir / scheme / "summary.json"));
+    polish[scheme] = json["polish"];
+    std::printf(
+        "[ lm       ] %s: fitness %.6g -> %.6g in %d iterations, %llu evaluations\n",
+        scheme.c_str(), json["polish"]["fitness_before"].get<double>(),
+        json["polish"]["fitness_after"].get<double>(), json["polish"]["iterations"].get<int>(),
+        static_cast<unsigned long long>(json["polish"]["evaluations"].get<std::uint64_t>()));
+    ASSERT_TRUE(json["polish"]["used"].get<bool>()) << scheme;
+    int compared = 0;
+    for (const auto& [name, truth] : pendulum_truth()) {
+      if (!json["free"].contains(name)) continue;
+      EXPECT_NEAR(json["free"][name].get<double>(), truth, 0.01 * truth) << scheme << " " << name;
+      ++compared;
+    }
+    EXPECT_EQ(compared, 4);
+  }
+  const auto cost_bound = [&](const std::string& scheme, std::uint64_t per_iteration) {
+    return per_iteration * static_cast<std::uint64_t>(polish[scheme]["iterations"].get<int>() + 1);
+  };
+  const std::uint64_t p = 4;
+  EXPECT_LE(polish["forward"]["evaluations"].get<std::uint64_t>(), cost_bound("forward", p + 1));
+  // Central differences do cost more than forward ones could: the bound above is not slack.
+  EXPECT_GT(polish["central"]["evaluations"].get<std::uint64_t>(), cost_bound("central", p + 1));
+  fs::remove_all(dir);
+}
+
 // LM's iterations are what a long polish spends its time on (each: 2p passes over the logs):
 // the console gets one line per iteration with a fitness that never rises, a cancel ends the
 // polish after the iteration in which it came, and a spent time budget leaves LM out.
@@ -200,6 +247,12 @@ TEST(FitLmPolishTest, ThePolishSectionIsCheckedAndRoundTrips) {
   EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {method: gauss}\n")), InputError);
   EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {max_iterations: 0}\n")), InputError);
   EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {jacobian_step: 0.5}\n")), InputError);
+  EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {jacobian: backward}\n")), InputError);
+  EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {method: none, jacobian: forward}\n")),
+               InputError);
+  const FitSpec forward = load_fit_spec(write_fit(dir, dir, "polish: {jacobian: forward}\n"));
+  EXPECT_EQ(forward.polish.lm_jacobian, FiniteDifferences::kForward);
+  EXPECT_EQ(fit_spec_to_json(forward)["polish"]["jacobian"], "forward");
   const FitSpec spec =
       load_fit_spec(write_fit(dir, dir, "polish: {max_iterations: 7, covariance: false}\n"));
   EXPECT_TRUE(spec.polish.lm());  // method defaults to lm inside the section
@@ -217,6 +270,7 @@ TEST(FitLmPolishTest, ThePolishSectionIsCheckedAndRoundTrips) {
   EXPECT_EQ(scanned.polish.flat_scan, 5u);
   EXPECT_EQ(fit_spec_to_json(scanned)["polish"]["flat_scan"], 5);
   EXPECT_FALSE(fit_spec_to_json(spec)["polish"].contains("flat_scan"));  // hashes unchanged
+  EXPECT_FALSE(fit_spec_to_json(spec)["polish"].contains("jacobian"));
   fs::remove_all(dir);
 }
 

@@ -87,18 +87,26 @@ struct FitBudget {
   double stall_relative = 1e-3;
 };
 
+// How a finite-difference Jacobian samples each coordinate (PolishSpec::lm_jacobian).
+enum class FiniteDifferences { kCentral, kForward };
+
 // The optional least-squares finish after the strategy (the `polish:` section): Levenberg–
 // Marquardt (Ceres) on the residual vector √w_j (q_real − q_sim)/√(T^m) of every scored frame and
-// channel of the training logs (so its squared norm is the fitness), with a central finite-
-// difference Jacobian through the rollout in the strategy's search coordinates (log where
-// `log: true`), clamped to the bounds. Its result replaces the strategy's best only if it lowers
-// the fitness. With `covariance` the summary reports σ²(JᵀJ)⁻¹ at the best point (σ² = RSS/(N−p)),
-// 95 % confidence intervals and the correlation matrix (also without LM: `method: none`).
+// channel of the training logs (so its squared norm is the fitness), with a finite-difference
+// Jacobian through the rollout (`jacobian: central`, 2p rollout sets, or `forward`, p) in the
+// strategy's search coordinates (log where `log: true`), clamped to the bounds. Its result replaces
+// the strategy's best only if it lowers the fitness. With `covariance` the summary reports
+// σ²(JᵀJ)⁻¹ at the best point (σ² = RSS/(N−p)), 95 % confidence intervals and the correlation
+// matrix (also without LM: `method: none`).
 struct PolishSpec {
   std::string method;               // "" / "none": no LM; "lm": Levenberg–Marquardt
-  std::size_t max_iterations = 20;  // LM iterations (each: one Jacobian, 2p rollouts of all logs)
+  std::size_t max_iterations = 20;  // LM iterations (each: one Jacobian, 2p or p rollout sets)
   double jacobian_step = 1e-3;      // finite-difference step, share of each bound width
-  bool covariance = true;           // uncertainty at the best point (default on with lm)
+  // LM's Jacobian: central differences (x ± h, error O(h²), 2p rollout sets) or forward ones
+  // (x + h, error O(h), p rollout sets: half the cost of an iteration). The covariance is
+  // always central: it is computed once and its intervals should not carry the O(h) error.
+  FiniteDifferences lm_jacobian = FiniteDifferences::kCentral;
+  bool covariance = true;  // uncertainty at the best point (default on with lm)
   // Points per parameter of the scan along the parameters LM cannot move (zero Jacobian column)
   // after LM ends, LM going on from a scan that lowers F (flat_direction_scan.hpp); 0: none,
   // else >= 3.
