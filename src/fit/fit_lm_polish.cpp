@@ -239,7 +239,9 @@ FitUncertainty fit_uncertainty(const FitConfig& config, const std::vector<double
   out.rollouts = 1;
   if (!residuals.evaluate(x, r0.data())) return out;
   std::vector<double> j;
-  out.rollouts += residuals.jacobian(x, r0, config.polish.jacobian_step, j);
+  // Central whatever LM used: computed once, and the intervals should not carry an O(h) error.
+  out.rollouts +=
+      residuals.jacobian(x, r0, config.polish.jacobian_step, j, FiniteDifferences::kCentral);
   double rss = 0.0;
   for (const double r : r0) rss += r * r;
   out.search = least_squares_covariance(j, n, p, rss);

@@ -80,64 +80,58 @@ std::uint64_t FitResiduals::jacobian(const std::vector<double>& x, const std::ve
   const std::vector<double> lower = config_.space->lower(), upper = config_.space->upper();
   std::vector<double> h(p);
   for (std::size_t i = 0; i < p; ++i) h[i] = step * (upper[i] - lower[i]);
-  // The points of one pass: coordinate i moved by sign·h_i where `sign` is ±1 and the point
-  // stays within the bounds; `column[k]` is the coordinate of point k.
-  struct Pass {
-    std::vector<std::vector<double>> points;
-    std::vector<std::size_t> column;
-    std::vector<double> offset;
-    std::vector<std::vector<double>> r;
-    std::vector<char> ok;
-  };
-  const auto add = [&](Pass& pass, std::size_t i, double sign) {
+  // Probe k moves coordinate column[k] by offset[k] (±h); only points within the bounds.
+  std::vector<std::size_t> column;
+  std::vector<double> offset;
+  std::vector<std::vector<double>> points;
+  const auto probe = [&](std::size_t i, double sign) {
     const double at = x[i] + sign * h[i];
     if (at > upper[i] || at < lower[i]) return false;
-    pass.points.push_back(x);
-    pass.points.back()[i] = at;
-    pass.column.push_back(i);
-    pass.offset.push_back(sign * h[i]);
+    column.push_back(i);
+    offset.push_back(sign * h[i]);
+    points.push_back(x);
+    points.back()[i] = at;
     return true;
   };
-  std::uint64_t rollouts = 0;
-  out.assign(n * p, 0.0);
-  if (scheme == FiniteDifferences::kCentral) {
-    // Two points per coordinate (x + h, x − h); a side outside the bounds is skipped.
-    Pass pass;
-    std::vector<std::ptrdiff_t> plus(p, -1), minus(p, -1);
-    for (std::size_t i = 0; i < p; ++i) {
-      if (add(pass, i, 1.0)) plus[i] = static_cast<std::ptrdiff_t>(pass.points.size() - 1);
-      if (add(pass, i, -1.0)) minus[i] = static_cast<std::ptrdiff_t>(pass.points.size() - 1);
-    }
-    rollouts += evaluate_points(pass.points, pass.r, pass.ok);
-    for (std::size_t i = 0; i < p; ++i) {
-      const bool up = plus[i] >= 0 && pass.ok[static_cast<std::size_t>(plus[i])] != 0;
-      const bool down = minus[i] >= 0 && pass.ok[static_cast<std::size_t>(minus[i])] != 0;
-      if (!up && !down) continue;
-      const double* a = up ? pass.r[static_cast<std::size_t>(plus[i])].data() : r0.data();
-      const double* b = down ? pass.r[static_cast<std::size_t>(minus[i])].data() : r0.data();
-      const double width = (up ? h[i] : 0.0) + (down ? h[i] : 0.0);
-      for (std::size_t k = 0; k < n; ++k) out[k * p + i] = (a[k] - b[k]) / width;
-    }
-    return rollouts;
-  }
-  // Forward: x + h_i, else x − h_i; a failed side is retried on the other in a second pass.
-  Pass first;
   for (std::size_t i = 0; i < p; ++i) {
-    if (!add(first, i, 1.0)) add(first, i, -1.0);
+    // Central: both sides. Forward: x + h, or x − h where x + h leaves the bounds.
+    const bool plus = probe(i, 1.0);
+    if (scheme == FiniteDifferences::kCentral || !plus) probe(i, -1.0);
   }
-  rollouts += evaluate_points(first.points, first.r, first.ok);
-  Pass retry;
-  for (std::size_t k = 0; k < first.points.size(); ++k) {
-    if (first.ok[k] == 0) add(retry, first.column[k], first.offset[k] > 0.0 ? -1.0 : 1.0);
-  }
-  if (!retry.points.empty()) rollouts += evaluate_points(retry.points, retry.r, retry.ok);
-  for (const Pass* pass : {&first, &retry}) {
-    for (std::size_t k = 0; k < pass->points.size(); ++k) {
-      if (pass->ok[k] == 0) continue;
-      const std::size_t i = pass->column[k];
-      const double* a = pass->r[k].data();
-      for (std::size_t m = 0; m < n; ++m) out[m * p + i] = (a[m] - r0[m]) / pass->offset[k];
+  std::vector<std::vector<double>> r;
+  std::vector<char> ok;
+  std::uint64_t rollouts = evaluate_points(points, r, ok);
+  if (scheme == FiniteDifferences::kForward) {
+    // A failed forward probe is retried on the other side, in a second pass.
+    points.clear();
+    const std::size_t first = column.size();
+    for (std::size_t k = 0; k < first; ++k) {
+      if (ok[k] == 0) probe(column[k], offset[k] > 0.0 ? -1.0 : 1.0);
     }
+    if (!points.empty()) {
+      std::vector<std::vector<double>> retry_r;
+      std::vector<char> retry_ok;
+      rollouts += evaluate_points(points, retry_r, retry_ok);
+      r.insert(r.end(), retry_r.begin(), retry_r.end());
+      ok.insert(ok.end(), retry_ok.begin(), retry_ok.end());
+    }
+  }
+  // Column i from its completed probes: two give (r_a − r_b)/(offset_a − offset_b), one gives
+  // (r − r0)/offset; none leaves the column zero.
+  std::vector<std::ptrdiff_t> done(p, -1);
+  out.assign(n * p, 0.0);
+  for (std::size_t k = 0; k < column.size(); ++k) {
+    if (ok[k] == 0) continue;
+    const std::size_t i = column[k];
+    const double* a = r[k].data();
+    if (done[i] < 0) {
+      done[i] = static_cast<std::ptrdiff_t>(k);
+      for (std::size_t m = 0; m < n; ++m) out[m * p + i] = (a[m] - r0[m]) / offset[k];
+      continue;
+    }
+    const auto b = static_cast<std::size_t>(done[i]);
+    const double width = offset[b] - offset[k];
+    for (std::size_t m = 0; m < n; ++m) out[m * p + i] = (r[b][m] - a[m]) / width;
   }
   return rollouts;
 }

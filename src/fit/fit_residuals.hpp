@@ -36,8 +36,7 @@ class FitResiduals {
   // only). Either way a zero column where neither side works. Returns the rollout sets
   // simulated (each a pass over all logs).
   std::uint64_t jacobian(const std::vector<double>& x, const std::vector<double>& r0, double step,
-                         std::vector<double>& out,
-                         FiniteDifferences scheme = FiniteDifferences::kCentral) const;
+                         std::vector<double>& out, FiniteDifferences scheme) const;
 
  private:
   // r at each point into `r` (`ok`: the rollouts completed), the points in parallel; returns
