@@ -244,7 +244,9 @@ FitUncertainty fit_uncertainty(const FitConfig& config, const std::vector<double
       residuals.jacobian(x, r0, config.polish.jacobian_step, j, FiniteDifferences::kCentral);
   double rss = 0.0;
   for (const double r : r0) rss += r * r;
-  out.search = least_squares_covariance(j, n, p, rss);
+  out.autocorrelation =
+      residual_autocorrelation(r0, residuals.frames_per_case(), residuals.channels());
+  out.search = least_squares_covariance(j, n, p, rss, out.autocorrelation.inflation);
   out.computed = true;
   return out;
 }

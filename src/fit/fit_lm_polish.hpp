@@ -12,6 +12,7 @@
 #include "flat_direction_scan.hpp"
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/parameter_covariance.hpp"
+#include "motoflex/fit/residual_autocorrelation.hpp"
 
 namespace motoflex::detail {
 
@@ -55,12 +56,13 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
                          double start_fitness, const LmPolishHooks& hooks = {});
 
 struct FitUncertainty {
-  LeastSquaresCovariance search;  // in the strategy's coordinates (log where searched so)
+  LeastSquaresCovariance search;            // in the strategy's coordinates (log where searched so)
+  ResidualAutocorrelation autocorrelation;  // of r at x: the covariance's inflation κ
   std::uint64_t rollouts = 0;
   bool computed = false;  // false: a rollout at x failed, or fewer residuals than parameters
 };
 
-// σ²(JᵀJ)⁻¹ at x with the polish's finite-difference Jacobian.
+// κσ²(JᵀJ)⁻¹ at x with a central finite-difference Jacobian, κ from the autocorrelation of r(x).
 FitUncertainty fit_uncertainty(const FitConfig& config, const std::vector<double>& x);
 
 }  // namespace motoflex::detail

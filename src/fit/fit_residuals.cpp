@@ -15,6 +15,7 @@ FitResiduals::FitResiduals(const FitConfig& config, int threads)
     const std::size_t first = first_scored_frame(c, f.options().settle_s);
     const double frames = static_cast<double>(c.commands.frames() - first);
     first_frame_.push_back(first);
+    frames_.push_back(c.commands.frames() - first);
     scale_.push_back(1.0 / std::sqrt(std::pow(frames, f.options().m)));
     size_ += (c.commands.frames() - first) * f.channels();
   }
@@ -22,6 +23,10 @@ FitResiduals::FitResiduals(const FitConfig& config, int threads)
 
 std::size_t FitResiduals::dimension() const {
   return config_.space->dimension();
+}
+
+std::size_t FitResiduals::channels() const {
+  return config_.train->channels();
 }
 
 bool FitResiduals::evaluate(const std::vector<double>& x, double* out) const {

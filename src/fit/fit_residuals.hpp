@@ -24,6 +24,9 @@ class FitResiduals {
 
   std::size_t size() const { return size_; }  // N
   std::size_t dimension() const;              // p
+  // The layout of r: per training log its scored frames, each frame `channels()` residuals.
+  const std::vector<std::size_t>& frames_per_case() const { return frames_; }
+  std::size_t channels() const;
 
   // r(x) into `out` (size()); false when a rollout fails or ends before its log does (the
   // residuals are then not comparable).
@@ -48,6 +51,7 @@ class FitResiduals {
   int threads_;
   std::size_t size_ = 0;
   std::vector<std::size_t> first_frame_;  // per case
+  std::vector<std::size_t> frames_;       // per case: scored frames
   std::vector<double> scale_;             // per case: 1/√(T^m)
 };
 

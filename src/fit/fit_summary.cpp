@@ -43,6 +43,18 @@ std::string FitSummary::uncertainty_report(std::size_t width) const {
   if (!unidentified.empty()) {
     out += "  unidentified (95 % interval spans > 50 % of the bounds): " + unidentified + "\n";
   }
+  if (variance_inflation > 1.0) {
+    out += format("  intervals widened %.3gx for correlated residuals",
+                  std::sqrt(variance_inflation)) +
+           format(" (lag-1 autocorrelation %.4f: ", residual_lag1) +
+           format("%.4g effective of ", effective_residuals) + std::to_string(residuals) +
+           " residuals)\n";
+    if (effective_residuals <= static_cast<double>(parameters.size())) {
+      out +=
+          "  fewer effective residuals than free parameters: the residual is model error more "
+          "than noise, and no interval here is reliable\n";
+    }
+  }
   for (std::size_t a = 0; a < correlation.size(); ++a) {
     for (std::size_t b = a + 1; b < correlation.size(); ++b) {
       if (std::abs(correlation[a][b]) > 0.9) {

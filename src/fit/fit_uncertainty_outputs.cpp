@@ -72,6 +72,10 @@ void fill_intervals(const FitConfig& config, const RunResult& result, FitSummary
     }
   }
   summary.correlation = c.correlation;  // invariant under the per-parameter scaling
+  summary.residual_lag1 = result.uncertainty.autocorrelation.lag1;
+  summary.variance_inflation = c.variance_inflation;
+  summary.effective_residuals = result.uncertainty.autocorrelation.effective;
+  summary.residuals = c.residuals;
 }
 
 }  // namespace
@@ -105,11 +109,16 @@ void add_uncertainty_outputs(const FitConfig& config, const RunResult& result, F
   json["correlation"] = matrix_json(names, summary.correlation);
   json["uncertainty"] = {
       {"method",
-       "sigma^2 (J^T J)^-1 at the best point, J by central finite differences through the "
-       "rollout; 95 % intervals x +- 1.96 s in search coordinates (log where log: true)"},
+       "kappa sigma^2 (J^T J)^-1 at the best point, J by central finite differences through the "
+       "rollout, kappa = (1 + rho)/(1 - rho) from the residuals' lag-1 autocorrelation rho (1 "
+       "for white residuals); 95 % intervals x +- 1.96 s in search coordinates (log where log: "
+       "true)"},
       {"confidence", 0.95},
       {"sigma2", number(c.sigma2)},
       {"residuals", c.residuals},
+      {"lag1_autocorrelation", number(result.uncertainty.autocorrelation.lag1)},
+      {"variance_inflation", number(c.variance_inflation)},
+      {"effective_residuals", number(result.uncertainty.autocorrelation.effective)},
       {"parameters", c.parameters},
       {"rank", c.rank},
       {"evaluations", result.uncertainty.rollouts},

@@ -8,8 +8,12 @@
 namespace motoflex {
 
 LeastSquaresCovariance least_squares_covariance(const std::vector<double>& jacobian,
-                                                std::size_t rows, std::size_t cols, double rss) {
+                                                std::size_t rows, std::size_t cols, double rss,
+                                                double variance_inflation) {
   if (jacobian.size() != rows * cols) throw std::invalid_argument("covariance: J is not N x p");
+  if (!(variance_inflation >= 1.0)) {
+    throw std::invalid_argument("covariance: the variance inflation must be at least 1");
+  }
   if (rows <= cols) throw std::invalid_argument("covariance: needs more residuals than parameters");
   const auto n = static_cast<Eigen::Index>(rows), p = static_cast<Eigen::Index>(cols);
   const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> j(
@@ -26,6 +30,7 @@ LeastSquaresCovariance least_squares_covariance(const std::vector<double>& jacob
   out.parameters = cols;
   out.rss = rss;
   out.sigma2 = rss / static_cast<double>(rows - cols);
+  out.variance_inflation = variance_inflation;
   // (JᵀJ)⁺ over the directions the data see; a parameter with a share in an unseen direction
   // has no finite variance.
   Eigen::MatrixXd inverse = Eigen::MatrixXd::Zero(p, p);
@@ -50,7 +55,8 @@ LeastSquaresCovariance least_squares_covariance(const std::vector<double>& jacob
       const bool unseen = undetermined[a] || undetermined[b];
       out.covariance[a][b] =
           unseen ? (a == b ? inf : nan)
-                 : out.sigma2 * inverse(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+                 : variance_inflation * out.sigma2 *
+                       inverse(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
     }
   }
   for (std::size_t a = 0; a < cols; ++a) {

@@ -30,7 +30,7 @@ TEST(FitLmPolishTest, CovarianceOfAStraightLineFitIsSigmaSquaredTimesTheInverseN
   // y = a + b·t at t = 0, 1, 2, 3: J = [1 t], JᵀJ = [[4, 6], [6, 14]], det 20,
   // (JᵀJ)⁻¹ = [[14, −6], [−6, 4]] / 20; RSS 0.8 over N − p = 2 gives σ² = 0.4.
   const std::vector<double> j = {1, 0, 1, 1, 1, 2, 1, 3};
-  const LeastSquaresCovariance c = least_squares_covariance(j, 4, 2, 0.8);
+  const LeastSquaresCovariance c = least_squares_covariance(j, 4, 2, 0.8, 1.0);
   EXPECT_DOUBLE_EQ(c.sigma2, 0.4);
   EXPECT_EQ(c.rank, 2u);
   EXPECT_NEAR(c.covariance[0][0], 0.4 * 14.0 / 20.0, 1e-14);
@@ -45,12 +45,12 @@ TEST(FitLmPolishTest, CovarianceOfAStraightLineFitIsSigmaSquaredTimesTheInverseN
 TEST(FitLmPolishTest, ADirectionTheDataCannotSeeHasNoFiniteVariance) {
   // Columns 0 and 1 are equal (only their sum is determined); column 2 is independent.
   const std::vector<double> j = {1, 1, 0, 2, 2, 1, 3, 3, 0, 1, 1, 5};
-  const LeastSquaresCovariance c = least_squares_covariance(j, 4, 3, 1.0);
+  const LeastSquaresCovariance c = least_squares_covariance(j, 4, 3, 1.0, 1.0);
   EXPECT_EQ(c.rank, 2u);
   EXPECT_TRUE(std::isinf(c.standard_error[0]));
   EXPECT_TRUE(std::isinf(c.standard_error[1]));
   EXPECT_TRUE(std::isfinite(c.standard_error[2]));
-  EXPECT_THROW(least_squares_covariance(j, 4, 4, 1.0), std::invalid_argument);
+  EXPECT_THROW(least_squares_covariance(j, 4, 4, 1.0, 1.0), std::invalid_argument);
 }
 
 // A fit of the four bench parameters from 15 % off the truth, the strategy given almost no

@@ -3,6 +3,7 @@
 // FitSummary: what a finished (or stopped) fit reports, modelled on Ceres's Solver::Summary:
 // brief_report() is one line, full_report() the table a user reads, to_json() is summary.json.
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -58,11 +59,16 @@ struct FitSummary {
   std::string polish_method;  // "" (none), "bobyqa", "sbplx", "lm"
   double fitness_before_polish = std::numeric_limits<double>::quiet_NaN();
   bool polish_used = false;
-  // σ²(JᵀJ)⁻¹ of the free parameters in model units (delta method on log-scale ones) and its
-  // correlation matrix; empty when not computed.
+  // κσ²(JᵀJ)⁻¹ of the free parameters in model units (delta method on log-scale ones) and its
+  // correlation matrix; empty when not computed. κ = (1 + ρ)/(1 − ρ) for the residuals' lag-1
+  // autocorrelation ρ (residual_autocorrelation.hpp).
   std::vector<std::vector<double>> covariance;
   std::vector<std::vector<double>> correlation;
-  double seconds = 0.0;  // wall time over all sessions of the run
+  double residual_lag1 = 0.0;        // ρ
+  double variance_inflation = 1.0;   // κ
+  double effective_residuals = 0.0;  // N / κ
+  std::size_t residuals = 0;         // N
+  double seconds = 0.0;              // wall time over all sessions of the run
   std::vector<FittedParameter> parameters;
   double train_rms_deg = 0.0;
   double validation_rms_deg = -1.0;  // < 0: no validation logs
