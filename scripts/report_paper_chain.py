@@ -13,6 +13,10 @@ and per parameter the fitted value against the truth, with the stage's identific
 
     scripts/report_paper_chain.py                    # runs both stages (about 30 min on 2 cores)
     scripts/report_paper_chain.py --report-only      # re-reads OUT/runs
+    scripts/report_paper_chain.py --report-only --recheck-uncertainty
+        # ... and recomputes each stage's intervals at its best.json with the current binary
+        # (no fit: `polish: {method: none, covariance: true}`, OUT/runs/<stage>_uncertainty;
+        # 2 min for stage 1, 9 for stage 2), whose verdicts then fill the "identified" columns
 
 Writes OUT/paper_chain.md and OUT/paper_chain.json (default benchmarks/paper_chain/).
 """
@@ -58,6 +62,20 @@ def run_stages(binary, out):
         previous = run_dir
 
 
+def recheck_uncertainty(binary, out, threads):
+    """Each stage's intervals and sensitivities recomputed at its best.json, without fitting."""
+    for name, config_path in STAGES:
+        config = derived_config(config_path, {"kind": "nlopt", "algorithm": "sbplx"}, 1, threads, 1)
+        config["polish"] = {"method": "none", "covariance": True}
+        path = out / f"uncertainty_{config_path.stem}.yaml"
+        write_config(path, config)
+        run_dir = out / "runs" / f"{name}_uncertainty"
+        shutil.rmtree(run_dir, ignore_errors=True)
+        subprocess.run([str(c) for c in [binary, "fit", path, "--out", run_dir, "--start-from",
+                                         out / "runs" / name / "best.json"]],
+                       check=True, stdout=subprocess.DEVNULL)
+
+
 def stage_results(binary, out, threads):
     """Per stage, read back from OUT/runs/<stage>: evaluations, wall time, best fitness,
     F(truth) under the stage's own scoring, validation RMS, and each parameter against the
@@ -66,11 +84,22 @@ def stage_results(binary, out, threads):
     for name, config in STAGES:
         summary = json.loads((out / "runs" / name / "summary.json").read_text())
         f_truth, point = truth_fitness(binary, out, config, threads)
+        parameters = fit_speed.recovered(summary, point)
+        verdicts = "the stage's own run"
+        recheck = out / "runs" / f"{name}_uncertainty" / "summary.json"
+        if recheck.exists():
+            # The verdicts of the recheck at the same point (the fitted values stay the stage's).
+            again = {r["name"]: r for r in fit_speed.recovered(json.loads(recheck.read_text()),
+                                                              point)}
+            for r in parameters:
+                r["unidentified"] = again[r["name"]]["unidentified"]
+            verdicts = "recomputed at the stage's best (--recheck-uncertainty)"
         stages.append({"stage": name, "config": str(config.relative_to(ROOT)),
+                       "identification": verdicts,
                        "evaluations": summary["evaluations"], "wall_seconds": summary["seconds"],
                        "best_fitness": summary["best_fitness"], "truth_fitness": f_truth,
                        "validation_rms_deg": summary.get("validation", {}).get("rms_deg", {})
-                       .get("overall"), "parameters": fit_speed.recovered(summary, point),
+                       .get("overall"), "parameters": parameters,
                        "flat_scan_moves": summary.get("polish", {}).get("flat_scan_moves", [])})
     return stages
 
@@ -88,11 +117,16 @@ def main():
     parser.add_argument("--out", default=str(ROOT / "benchmarks" / "paper_chain"))
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--report-only", action="store_true")
+    parser.add_argument("--recheck-uncertainty", action="store_true")
     args = parser.parse_args()
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     if not args.report_only:
         run_stages(args.binary, out)
+        for name, _ in STAGES:  # a fresh chain's own verdicts replace an older recheck
+            shutil.rmtree(out / "runs" / f"{name}_uncertainty", ignore_errors=True)
+    if args.recheck_uncertainty:
+        recheck_uncertainty(args.binary, out, args.threads)
     result = {"stages": stage_results(args.binary, out, args.threads)}
     lines = ["| stage | logs scored | evaluations | wall s | best F | F(truth) | best / F(truth) | "
              "validation RMS (deg) | within 5 % | identified, of them within 5 % | "
@@ -109,7 +143,7 @@ def main():
             f"{stage['validation_rms_deg']:.3f} | {sum(r['within'] for r in rows)} of {len(rows)} | "
             f"{len(identified)}, {sum(r['within'] for r in identified)} | "
             f"{flat_scan_text(stage.get('flat_scan_moves', []))} |")
-        table = [f"Stage `{name}`, per parameter:", "",
+        table = [f"Stage `{name}`, per parameter (identified: {stage['identification']}):", "",
                  "| parameter | truth | fitted | error | identified |", "|---|---|---|---|---|"]
         for r in rows:
             error = (f"{100 * r['relative_error']:.1f} %" if r["truth"] != 0

@@ -31,7 +31,7 @@ class RolloutCost final : public ceres::CostFunction {
     if (jacobians != nullptr && jacobians[0] != nullptr) {
       const std::vector<double> r0(out, out + n);
       std::vector<double> j;
-      rollouts_ += residuals_.jacobian(x, r0, step_, j, scheme_);
+      rollouts_ += residuals_.jacobian(x, r0, step_, j, scheme_, nullptr);
       std::copy(j.begin(), j.end(), jacobians[0]);
       last_jacobian_x_ = x;
       last_jacobian_ = std::move(j);
@@ -208,7 +208,7 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
       ++rollouts;
       if (!residuals.evaluate(x, r0.data())) break;
       rollouts += residuals.jacobian(x, r0, config.polish.jacobian_step, jacobian,
-                                     config.polish.lm_jacobian);
+                                     config.polish.lm_jacobian, nullptr);
     }
     const std::vector<std::size_t> flat =
         flat_columns(jacobian, residuals.size(), residuals.dimension());
@@ -240,8 +240,8 @@ FitUncertainty fit_uncertainty(const FitConfig& config, const std::vector<double
   if (!residuals.evaluate(x, r0.data())) return out;
   std::vector<double> j;
   // Central whatever LM used: computed once, and the intervals should not carry an O(h) error.
-  out.rollouts +=
-      residuals.jacobian(x, r0, config.polish.jacobian_step, j, FiniteDifferences::kCentral);
+  out.rollouts += residuals.jacobian(x, r0, config.polish.jacobian_step, j,
+                                     FiniteDifferences::kCentral, &out.nonlinearity);
   double rss = 0.0;
   for (const double r : r0) rss += r * r;
   out.autocorrelation =

@@ -58,6 +58,8 @@ LmPolishResult lm_polish(const FitConfig& config, const std::vector<double>& sta
 struct FitUncertainty {
   LeastSquaresCovariance search;            // in the strategy's coordinates (log where searched so)
   ResidualAutocorrelation autocorrelation;  // of r at x: the covariance's inflation κ
+  // Per parameter: r's departure from linear over the Jacobian's ±h (FitResiduals::jacobian).
+  std::vector<double> nonlinearity;
   std::uint64_t rollouts = 0;
   bool computed = false;  // false: a rollout at x failed, or fewer residuals than parameters
 };

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "motoflex/sim/ode_runtime.hpp"
+#include "probe_nonlinearity.hpp"
 
 namespace motoflex::detail {
 
@@ -80,7 +82,8 @@ std::uint64_t FitResiduals::evaluate_points(const std::vector<std::vector<double
 
 std::uint64_t FitResiduals::jacobian(const std::vector<double>& x, const std::vector<double>& r0,
                                      double step, std::vector<double>& out,
-                                     FiniteDifferences scheme) const {
+                                     FiniteDifferences scheme,
+                                     std::vector<double>* nonlinearity) const {
   const std::size_t p = dimension(), n = size_;
   const std::vector<double> lower = config_.space->lower(), upper = config_.space->upper();
   std::vector<double> h(p);
@@ -125,6 +128,7 @@ std::uint64_t FitResiduals::jacobian(const std::vector<double>& x, const std::ve
   // (r − r0)/offset; none leaves the column zero.
   std::vector<std::ptrdiff_t> done(p, -1);
   out.assign(n * p, 0.0);
+  if (nonlinearity != nullptr) nonlinearity->assign(p, std::numeric_limits<double>::quiet_NaN());
   for (std::size_t k = 0; k < column.size(); ++k) {
     if (ok[k] == 0) continue;
     const std::size_t i = column[k];
@@ -137,6 +141,10 @@ std::uint64_t FitResiduals::jacobian(const std::vector<double>& x, const std::ve
     const auto b = static_cast<std::size_t>(done[i]);
     const double width = offset[b] - offset[k];
     for (std::size_t m = 0; m < n; ++m) out[m * p + i] = (r[b][m] - a[m]) / width;
+    if (nonlinearity != nullptr) {
+      // Probe b is x + h (made first), k is x − h.
+      (*nonlinearity)[i] = probe_nonlinearity(r[b].data(), a, r0.data(), n);
+    }
   }
   return rollouts;
 }

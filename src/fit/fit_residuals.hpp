@@ -38,8 +38,13 @@ class FitResiduals {
   // where x + h_i leaves the bounds or its rollout fails (a second pass over those columns
   // only). Either way a zero column where neither side works. Returns the rollout sets
   // simulated (each a pass over all logs).
+  // `nonlinearity` (may be null) gets, per column with both probes, how far r is from linear
+  // over ±h: s_i = ‖d₊ + d₋‖ / ‖d₊ − d₋‖, d± = r(x ± h_i e_i) − r(x), the second-order change
+  // against the first-order one (b·h/a for r = a·δ + b·δ²; near 1 where r is not smooth at
+  // the scale h, e.g. a chaotic walk); NaN for a one-sided or zero column.
   std::uint64_t jacobian(const std::vector<double>& x, const std::vector<double>& r0, double step,
-                         std::vector<double>& out, FiniteDifferences scheme) const;
+                         std::vector<double>& out, FiniteDifferences scheme,
+                         std::vector<double>* nonlinearity) const;
 
  private:
   // r at each point into `r` (`ok`: the rollouts completed), the points in parallel; returns

@@ -37,11 +37,16 @@ std::string FitSummary::uncertainty_report(std::size_t width) const {
     out += "  " + pad(p.name, width) + format(" %12.5g", p.value) +
            format(" %12.3g", p.standard_error) + "   [" + format("%.5g", p.ci_lower) + ", " +
            format("%.5g", p.ci_upper) + "]" + format("  %5.0f %%", 100.0 * p.ci_share_of_bounds) +
-           (p.unidentified() ? "  UNIDENTIFIED" : "") + "\n";
+           (p.nonlinear() ? format("  NOT LINEAR (%.2f)", p.nonlinearity)
+                          : (p.unidentified() ? "  UNIDENTIFIED" : "")) +
+           "\n";
     if (p.unidentified()) unidentified += (unidentified.empty() ? "" : ", ") + p.name;
   }
   if (!unidentified.empty()) {
-    out += "  unidentified (95 % interval spans > 50 % of the bounds): " + unidentified + "\n";
+    out +=
+        "  unidentified (95 % interval spans > 50 % of the bounds, or the residual is not "
+        "linear in the parameter over the Jacobian's step, so that no interval holds): " +
+        unidentified + "\n";
   }
   if (variance_inflation > 1.0) {
     out += format("  intervals widened %.3gx for correlated residuals",

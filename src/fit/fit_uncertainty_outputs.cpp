@@ -64,6 +64,9 @@ void fill_intervals(const FitConfig& config, const RunResult& result, FitSummary
     if (space.free_parameters()[i].log_scale && !std::isfinite(lo)) f.ci_lower = 0.0;
     const double covered = std::min(hi, upper[i]) - std::max(lo, lower[i]);
     f.ci_share_of_bounds = std::max(covered, 0.0) / (upper[i] - lower[i]);
+    if (i < result.uncertainty.nonlinearity.size()) {
+      f.nonlinearity = result.uncertainty.nonlinearity[i];
+    }
   }
   summary.covariance.assign(p, std::vector<double>(p));
   for (std::size_t a = 0; a < p; ++a) {
@@ -100,6 +103,8 @@ void add_uncertainty_outputs(const FitConfig& config, const RunResult& result, F
                          {"lower", number(f.ci_lower)},
                          {"upper", number(f.ci_upper)},
                          {"share_of_bounds", number(f.ci_share_of_bounds)},
+                         {"nonlinearity", number(f.nonlinearity)},
+                         {"linear", !f.nonlinear()},
                          {"identified", !f.unidentified()}};
     if (f.unidentified()) unidentified.push_back(f.name);
   }
@@ -124,6 +129,7 @@ void add_uncertainty_outputs(const FitConfig& config, const RunResult& result, F
       {"evaluations", result.uncertainty.rollouts},
       {"jacobian_step_share_of_bounds", config.polish.jacobian_step},
       {"unidentified_above_share_of_bounds", FittedParameter::kUnidentifiedShare},
+      {"unidentified_above_nonlinearity", FittedParameter::kNonlinearShare},
       {"unidentified", unidentified},
       {"covariance_search", matrix_json(names, c.covariance)}};
 }

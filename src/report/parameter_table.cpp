@@ -108,10 +108,22 @@ std::string parameter_table_html(const std::vector<ParameterRow>& rows) {
       html += "<td class=\"na\">not available</td><td class=\"na\">not available</td>";
     } else {
       html += cell(row.interval.standard_error);
-      html += std::isnan(row.interval.lower) && std::isnan(row.interval.upper)
-                  ? std::string("<td class=\"na\">n/a</td>")
-                  : "<td class=\"num\">[" + escape_html(format_number(row.interval.lower)) + ", " +
-                        escape_html(format_number(row.interval.upper)) + "]</td>";
+      const std::string interval = "[" + escape_html(format_number(row.interval.lower)) + ", " +
+                                   escape_html(format_number(row.interval.upper)) + "]";
+      if (std::isnan(row.interval.lower) && std::isnan(row.interval.upper)) {
+        html += "<td class=\"na\">n/a</td>";
+      } else if (!row.interval.linear) {
+        html +=
+            "<td class=\"num bound\" title=\"the residual is not linear in this parameter "
+            "over the Jacobian's step (" +
+            escape_html(format_number(row.interval.nonlinearity)) +
+            "): the interval does not hold\">" + interval + " ⚠ not linear</td>";
+      } else if (!row.interval.identified) {
+        html += "<td class=\"num bound\" title=\"the interval spans most of the bounds\">" +
+                interval + " ⚠ not identified</td>";
+      } else {
+        html += "<td class=\"num\">" + interval + "</td>";
+      }
     }
     html += row.undetermined
                 ? "<td class=\"num bound\" title=\"the training data cannot determine "

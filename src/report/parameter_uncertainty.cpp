@@ -1,6 +1,7 @@
 #include "motoflex/report/parameter_uncertainty.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "motoflex/core/error.hpp"
 
@@ -76,6 +77,15 @@ ParameterInterval read_interval(const nlohmann::json& value, const std::string& 
     out.lower = number_or_missing(value["lower"], file, field + ".lower");
   if (value.contains("upper"))
     out.upper = number_or_missing(value["upper"], file, field + ".upper");
+  if (value.contains("nonlinearity")) {
+    out.nonlinearity = number_or_missing(value["nonlinearity"], file, field + ".nonlinearity");
+  }
+  for (const auto& [key, flag] : {std::pair<const char*, bool*>{"identified", &out.identified},
+                                  std::pair<const char*, bool*>{"linear", &out.linear}}) {
+    if (!value.contains(key)) continue;
+    if (!value[key].is_boolean()) throw InputError(file, 0, field + "." + key, "not true or false");
+    *flag = value[key].get<bool>();
+  }
   return out;
 }
 

@@ -124,6 +124,10 @@ TEST(FitLmPolishTest, LmRecoversTheTruthAndItsIntervalsCoverIt) {
     covered += lower <= truth && truth <= upper ? 1 : 0;
     ++compared;
     EXPECT_TRUE(ci["identified"].get<bool>()) << name;
+    // The bench's residual is smooth in every parameter at the Jacobian's step.
+    std::printf("[ lm       ] %-38s nonlinearity %.4f\n", name.c_str(),
+                ci["nonlinearity"].get<double>());
+    EXPECT_LT(ci["nonlinearity"].get<double>(), FittedParameter::kNonlinearShare) << name;
   }
   EXPECT_EQ(compared, 4);
   EXPECT_GE(covered, compared - 1);  // measured 3 of 4

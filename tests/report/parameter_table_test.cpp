@@ -72,6 +72,33 @@ TEST(ParameterRows, IntervalsAndCorrelationFromTheSummary) {
   EXPECT_NE(html.find("12.5"), std::string::npos);
 }
 
+TEST(ParameterTableHtml, IntervalsTheFitDoesNotTrustAreMarked) {
+  // kp: the residual is not linear in it over the Jacobian's step (a chaotic walk); friction:
+  // its interval spans most of the bounds.
+  const json summary = json::parse(R"({
+    "confidence_intervals": {
+      "pid.kp_v_per_rad": {"standard_error": 0.1, "lower": 321.3, "upper": 321.7,
+                           "nonlinearity": 0.93, "linear": false, "identified": false},
+      "joint.*Roll.friction_nm": {"standard_error": 2.0, "lower": 0.5, "upper": 5.0,
+                                  "nonlinearity": 0.01, "linear": true, "identified": false}}})");
+  const ParameterUncertainty uncertainty = read_parameter_uncertainty(summary, "summary.json");
+  const auto rows = parameter_rows(inputs_json(), best_json(), summary, uncertainty);
+  EXPECT_FALSE(rows[0].interval.linear);
+  EXPECT_DOUBLE_EQ(rows[0].interval.nonlinearity, 0.93);
+  EXPECT_TRUE(rows[1].interval.linear);
+  EXPECT_FALSE(rows[1].interval.identified);
+  const std::string html = parameter_table_html(rows);
+  EXPECT_NE(html.find("[321.3, 321.7] ⚠ not linear"), std::string::npos);
+  EXPECT_NE(html.find("[0.5, 5] ⚠ not identified"), std::string::npos);
+  const json bad = json::parse(R"({"confidence_intervals": {"a": {"linear": 1}}})");
+  try {
+    read_parameter_uncertainty(bad, "run/summary.json");
+    FAIL() << "a non-boolean verdict was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), "confidence_intervals.a.linear");
+  }
+}
+
 TEST(ParameterUncertaintyTest, CovarianceGivesStandardErrorsAndCorrelation) {
   // Object-of-objects form.
   const json summary = json::parse(R"({"covariance": {

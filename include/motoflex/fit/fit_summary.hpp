@@ -31,8 +31,17 @@ struct FittedParameter {
   double ci_upper = std::numeric_limits<double>::quiet_NaN();
   // The share of [lower, upper] (search coordinates) the interval covers; NaN when not computed.
   double ci_share_of_bounds = std::numeric_limits<double>::quiet_NaN();
-  // The interval spans most (> kUnidentifiedShare) of the bounds: the data do not identify it.
-  bool unidentified() const { return ci_share_of_bounds > kUnidentifiedShare; }
+  // How far the residual is from linear in this parameter over the Jacobian's step ±h:
+  // ‖d₊ + d₋‖/‖d₊ − d₋‖ (d± = r(x ± h) − r(x)); NaN when not measured. Above kNonlinearShare
+  // the second-order change is at least half the first-order one (near 1 for a chaotic walk,
+  // where any small change sends the late trajectory elsewhere): the linearisation behind the
+  // interval does not hold at that scale, and the interval says nothing.
+  double nonlinearity = std::numeric_limits<double>::quiet_NaN();
+  bool nonlinear() const { return nonlinearity > kNonlinearShare; }
+  static constexpr double kNonlinearShare = 0.5;
+  // The interval spans most (> kUnidentifiedShare) of the bounds, or it rests on a linearisation
+  // that does not hold: the data do not identify the parameter (as far as the interval shows).
+  bool unidentified() const { return ci_share_of_bounds > kUnidentifiedShare || nonlinear(); }
   static constexpr double kUnidentifiedShare = 0.5;
   // Where the value sits between its bounds, 0…1 (log scale where searched so); a value at a
   // bound (< 1 % or > 99 %) usually means the bounds cut the optimum off.

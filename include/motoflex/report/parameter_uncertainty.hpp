@@ -26,6 +26,11 @@ struct ParameterInterval {
   double standard_error = kNotAvailable;
   double lower = kNotAvailable;  // 95 % confidence interval
   double upper = kNotAvailable;
+  // The fit's verdicts (summary.json `identified`, `linear`; true when absent) and the
+  // residual's departure from linear over the Jacobian's step (`nonlinearity`; NaN when absent).
+  bool identified = true;
+  bool linear = true;
+  double nonlinearity = kNotAvailable;
 };
 
 // A square matrix over named parameters; empty when absent.
