@@ -6,10 +6,13 @@
 #include <cmath>
 #include <limits>
 
+#include "motoflex/fit/residual_autocorrelation.hpp"
+
 namespace motoflex::detail {
 namespace {
 
-constexpr double kProbeFraction = 0.05;  // probe step of the fit's own parameters (of the width)
+constexpr double kProbeFraction = 0.05;     // probe step of the fit's own parameters (of the width)
+constexpr double kMaxResidualLag1 = 0.999;  // N_eff ≥ N/1999
 
 // The simulated channels of frames [0, frames_completed) of a rollout, frame-major.
 std::vector<double> simulated_channels(const FitnessFunction& fitness, const RolloutResult& rollout,
@@ -31,7 +34,8 @@ Residual residual_of(const FitnessFunction& fitness, const ParameterSet& current
   out.channels = fitness.channels();
   const std::size_t k = out.channels;
   std::vector<double> measured(k);
-  double lagged = 0.0;
+  std::vector<double> all;  // every case's r, frame-major, for the autocorrelation
+  std::vector<std::size_t> frames_per_case;
   for (std::size_t c = 0; c < fitness.cases().size(); ++c) {
     const FitCase& fit_case = fitness.cases()[c];
     const RolloutResult& rollout = rollouts[c];
@@ -48,15 +52,16 @@ Residual residual_of(const FitnessFunction& fitness, const ParameterSet& current
         ++out.samples;
       }
     }
-    for (std::size_t f = first + 1; f < end; ++f) {
-      for (std::size_t i = 0; i < k; ++i) lagged += r[f * k + i] * r[(f - 1) * k + i];
-    }
+    // Frames outside [first, end) hold 0 and add nothing to either sum of the autocorrelation.
+    all.insert(all.end(), r.begin(), r.end());
+    frames_per_case.push_back(frames);
     out.r_rad.push_back(std::move(r));
     out.sim_rad.push_back(std::move(sim));
     out.first_frame.push_back(first);
     out.end_frame.push_back(end);
   }
-  const double rho = out.rss > 0.0 ? std::clamp(lagged / out.rss, 0.0, 0.999) : 0.0;
+  const double rho =
+      std::clamp(residual_autocorrelation(all, frames_per_case, k).lag1, 0.0, kMaxResidualLag1);
   out.effective_samples =
       std::max(2.0, static_cast<double>(out.samples) * (1.0 - rho) / (1.0 + rho));
   return out;

@@ -48,13 +48,13 @@ std::string FitSummary::uncertainty_report(std::size_t width) const {
         "linear in the parameter over the Jacobian's step, so that no interval holds): " +
         unidentified + "\n";
   }
-  if (variance_inflation > 1.0) {
-    out += format("  intervals widened %.3gx for correlated residuals",
-                  std::sqrt(variance_inflation)) +
-           format(" (lag-1 autocorrelation %.4f: ", residual_lag1) +
-           format("%.4g effective of ", effective_residuals) + std::to_string(residuals) +
+  const ResidualAutocorrelation& rho = residual_autocorrelation;
+  if (rho.inflation > 1.0) {
+    out += format("  intervals widened %.3gx for correlated residuals", std::sqrt(rho.inflation)) +
+           format(" (lag-1 autocorrelation %.4f: ", rho.lag1) +
+           format("%.4g effective of ", rho.effective) + std::to_string(residuals) +
            " residuals)\n";
-    if (effective_residuals <= static_cast<double>(parameters.size())) {
+    if (rho.effective <= static_cast<double>(parameters.size())) {
       out +=
           "  fewer effective residuals than free parameters: the residual is model error more "
           "than noise, and no interval here is reliable\n";

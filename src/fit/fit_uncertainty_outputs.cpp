@@ -75,9 +75,7 @@ void fill_intervals(const FitConfig& config, const RunResult& result, FitSummary
     }
   }
   summary.correlation = c.correlation;  // invariant under the per-parameter scaling
-  summary.residual_lag1 = result.uncertainty.autocorrelation.lag1;
-  summary.variance_inflation = c.variance_inflation;
-  summary.effective_residuals = result.uncertainty.autocorrelation.effective;
+  summary.residual_autocorrelation = result.uncertainty.autocorrelation;
   summary.residuals = c.residuals;
 }
 

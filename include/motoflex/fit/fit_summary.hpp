@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "motoflex/fit/residual_autocorrelation.hpp"
+
 namespace motoflex {
 
 struct FittedParameter {
@@ -73,11 +75,9 @@ struct FitSummary {
   // autocorrelation ρ (residual_autocorrelation.hpp).
   std::vector<std::vector<double>> covariance;
   std::vector<std::vector<double>> correlation;
-  double residual_lag1 = 0.0;        // ρ
-  double variance_inflation = 1.0;   // κ
-  double effective_residuals = 0.0;  // N / κ
-  std::size_t residuals = 0;         // N
-  double seconds = 0.0;              // wall time over all sessions of the run
+  ResidualAutocorrelation residual_autocorrelation;  // ρ, κ and N_eff of the covariance
+  std::size_t residuals = 0;                         // N
+  double seconds = 0.0;                              // wall time over all sessions of the run
   std::vector<FittedParameter> parameters;
   double train_rms_deg = 0.0;
   double validation_rms_deg = -1.0;  // < 0: no validation logs

@@ -8,8 +8,9 @@
 //
 //   κ = (1 + ρ) / (1 − ρ),   N_eff = N / κ,
 //
-// (the same N_eff the loop's effect signatures use). White residuals (ρ ≤ 0) leave κ = 1: a
-// model that explains the data up to sensor noise keeps its nominal intervals.
+// (the loop's effect signatures use this ρ too, src/effects/linearised_residual.cpp). White
+// residuals (ρ ≤ 0) leave κ = 1: a model that explains the data up to sensor noise keeps its
+// nominal intervals.
 
 #include <cstddef>
 #include <vector>
