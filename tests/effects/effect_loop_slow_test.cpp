@@ -170,11 +170,11 @@ TEST(RealServoLoop, BeatsTheCoulombViscousModelOnValidationLogs) {
   overrides.data = (dir / "train").string();
   overrides.validation = (dir / "validation").string();
   overrides.out = (dir / "run").string();
-  // The bundled config with a CI-sized loop: one iteration, its five candidates, and refits of
-  // 800 evaluations instead of 1500 (CI time). Measured 2026-11-29 with `motoflex loop` on this
-  // split: load friction validates at 36.0 mrad after 937 evaluations (40.4 with 1500: CMA-ES
-  // from the start scan's point lands differently, not worse); the other four stay above 59.5;
-  // 208 s on 2 threads of an otherwise idle machine against 595 s for the 1500 run under ctest -j2.
+  // The bundled config with a CI-sized loop: one iteration (its five candidates and their
+  // 800-evaluation refits). Measured 2026-11-29 with `motoflex loop` on this split: load friction
+  // validates at 36.0 mrad after 937 evaluations, the other four stay at or above 59.5; 184 s
+  // on 2 threads of an otherwise idle machine (595 s under ctest -j2 with the former
+  // 1500-evaluation refits, which ended at 40.4).
   std::string fit =
       read_text(fs::path(MOTOFLEX_SOURCE_DIR) / "scenarios/fit/servo_pendulum_bam.yaml");
   const auto replace = [&fit](const std::string& from, const std::string& to) {
@@ -183,7 +183,6 @@ TEST(RealServoLoop, BeatsTheCoulombViscousModelOnValidationLogs) {
   };
   replace("scenario: ../", "scenario: " + std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/");
   replace("max_iterations: 6", "max_iterations: 1");
-  replace("budget: {evaluations: 1500}", "budget: {evaluations: 800}");
   std::ofstream(dir / "fit.yaml") << fit;
   // Not forced: `motoflex loop scenarios/fit/servo_pendulum_bam.yaml --data ... --validation ...`
   // must run as written, so the bundled budget has to let the base fit converge (a loop on an
