@@ -48,13 +48,14 @@ std::string FitSummary::uncertainty_report(std::size_t width) const {
         "linear in the parameter over the Jacobian's step, so that no interval holds): " +
         unidentified + "\n";
   }
-  const ResidualAutocorrelation& rho = residual_autocorrelation;
-  if (rho.inflation > 1.0) {
-    out += format("  intervals widened %.3gx for correlated residuals", std::sqrt(rho.inflation)) +
-           format(" (lag-1 autocorrelation %.4f: ", rho.lag1) +
-           format("%.4g effective of ", rho.effective) + std::to_string(residuals) +
+  const ResidualAutocorrelation& autocorrelation = residual_autocorrelation;
+  if (autocorrelation.inflation > 1.0) {
+    out += format("  intervals widened %.3gx for correlated residuals",
+                  std::sqrt(autocorrelation.inflation)) +
+           format(" (lag-1 autocorrelation %.4f: ", autocorrelation.lag1) +
+           format("%.4g effective of ", autocorrelation.effective) + std::to_string(residuals) +
            " residuals)\n";
-    if (rho.effective <= static_cast<double>(parameters.size())) {
+    if (autocorrelation.effective <= static_cast<double>(parameters.size())) {
       out +=
           "  fewer effective residuals than free parameters: the residual is model error more "
           "than noise, and no interval here is reliable\n";
