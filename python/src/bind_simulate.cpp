@@ -31,7 +31,7 @@ struct ScenarioArgs {
   std::optional<std::string> params;  // parameter JSON file
   std::optional<std::string> motion;  // replay this log's commands
   std::optional<std::string> servo;
-  std::optional<std::string> solver;  // "step" | "quick"
+  std::optional<std::string> solver;  // "step" | "sparse" | "quick"
   std::optional<double> duration_s;
   std::string recording;  // a truth file's recording ("" = its first)
 };
@@ -44,7 +44,8 @@ Scenario load(const std::string& path, const ScenarioArgs& args) {
   overrides.duration_s = args.duration_s;
   if (args.solver) {
     overrides.solver = parse_step_solver(*args.solver);
-    if (!overrides.solver) throw InputError("", 0, "solver", "expected 'step' or 'quick'");
+    if (!overrides.solver)
+      throw InputError("", 0, "solver", "expected 'step', 'sparse' or 'quick'");
   }
   return load_scenario_or_truth(path, overrides, args.recording);
 }

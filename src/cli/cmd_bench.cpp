@@ -1,4 +1,4 @@
-// motoflex bench --robot <name|dir> [--solver step|quick] [--seconds S] [--servo KIND]
+// motoflex bench --robot <name|dir> [--solver step|sparse|quick] [--seconds S] [--servo KIND]
 //                [--flex N] [--substeps N] [--no-universal] [--rollouts R] [--threads T]
 // Times rollouts of a robot holding its stand pose and prints one JSON line.
 
@@ -47,7 +47,7 @@ int run(const BenchArgs& args) {
     throw InputError("", 0, "--rollouts/--threads", "must be >= 1");
   }
   const auto solver = parse_step_solver(args.solver);
-  if (!solver) throw InputError("", 0, "--solver", "expected 'step' or 'quick'");
+  if (!solver) throw InputError("", 0, "--solver", "expected 'step', 'sparse' or 'quick'");
   StructureOptions structure;
   structure.flex_sub_bodies = args.flex;
   structure.universal_joints = !args.no_universal;
@@ -101,7 +101,8 @@ CommandRunner add_bench_command(CLI::App& app) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* sub = app.add_subcommand("bench", "time rollouts of a robot; prints one JSON line");
   sub->add_option("--robot", args->robot, "robot name (scenarios/robots/<name>) or folder");
-  sub->add_option("--solver", args->solver, "step (exact, reproducible) or quick");
+  sub->add_option("--solver", args->solver,
+                  "step (exact, reproducible), sparse (the same LCP, faster solver) or quick");
   sub->add_option("--seconds", args->seconds, "simulated seconds per rollout")
       ->check(positive_seconds());
   sub->add_option("--servo", args->servo, "servo model (default: the robot's)");

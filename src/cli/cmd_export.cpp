@@ -68,6 +68,9 @@ nlohmann::ordered_json comparison_json(const MujocoComparison& c) {
           {"motoflex_steps_per_s", c.motoflex_steps_per_s},
           {"motoflex_quick_steps_per_s", c.motoflex_quick_steps_per_s},
           {"rms_deg_quick", c.rms_deg_quick},
+          {"motoflex_sparse_steps_per_s", c.motoflex_sparse_steps_per_s},
+          {"rms_deg_sparse", c.rms_deg_sparse},
+          {"rms_deg_sparse_vs_step", c.rms_deg_sparse_vs_step},
           {"motoflex_end", c.motoflex_end},
           {"geoms", c.geoms},
           {"visual_geoms", c.visual_geoms}};

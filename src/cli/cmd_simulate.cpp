@@ -53,7 +53,8 @@ int run(const SimulateArgs& args) {
   if (!args.motion.empty()) overrides.motion_log = args.motion;
   if (!args.solver.empty()) {
     overrides.solver = parse_step_solver(args.solver);
-    if (!overrides.solver) throw InputError("", 0, "--solver", "expected 'step' or 'quick'");
+    if (!overrides.solver)
+      throw InputError("", 0, "--solver", "expected 'step', 'sparse' or 'quick'");
   }
   if (args.duration_s > 0.0) overrides.duration_s = args.duration_s;
   const Scenario scenario = load_scenario_or_truth(args.scenario, overrides, args.recording);
@@ -125,7 +126,8 @@ CommandRunner add_simulate_command(CLI::App& app) {
       ->required();
   sub->add_option("--plot", args->plot, "also draw commanded vs simulated angles into this PNG");
   sub->add_option("--solver", args->solver,
-                  "step (exact) or quick (faster, less accurate); both reproducible in threads");
+                  "step (exact), sparse (the same LCP, faster solver) or quick (faster, less "
+                  "accurate); all reproducible in threads");
   sub->add_option("--duration", args->duration_s, "simulate only the first S seconds")
       ->check(positive_seconds());
   return [args] { return run(*args); };

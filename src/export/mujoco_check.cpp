@@ -56,6 +56,18 @@ struct Replay {
   std::size_t geoms = 0, visual_geoms = 0;
 };
 
+// RMS in degrees of the angle difference of two replays over the steps both completed.
+double rms_deg_between(const Replay& a, const Replay& b, std::size_t joints) {
+  const std::size_t steps = std::min(a.steps, b.steps);
+  if (steps == 0 || joints == 0) return 0.0;
+  double total = 0.0;
+  for (std::size_t k = 0; k < steps * joints; ++k) {
+    const double e = (a.angles_rad[k] - b.angles_rad[k]) * (180.0 / M_PI);
+    total += e * e;
+  }
+  return std::sqrt(total / static_cast<double>(steps * joints));
+}
+
 // `offsets_rad`: each joint's mounting offset. MuJoCo's qpos is the encoder's reading (the
 // joint's `ref` is the offset), so motoflex's joint angles are compared with the offset added,
 // and the robot is placed where its encoders read `first`.
@@ -161,6 +173,8 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
       replay_in_motoflex(input, samples, first, offsets_rad, options, StepSolver::kStep);
   const Replay quick =
       replay_in_motoflex(input, samples, first, offsets_rad, options, StepSolver::kQuickStep);
+  const Replay sparse =
+      replay_in_motoflex(input, samples, first, offsets_rad, options, StepSolver::kSparseStep);
   const Replay mujoco = replay_in_mujoco(input, samples, first, offsets_rad, options);
 
   MujocoComparison out;
@@ -187,14 +201,10 @@ MujocoComparison compare_with_mujoco(const ExportInput& input, const CommandTraj
   }
   out.motoflex_steps_per_s = ode.seconds > 0.0 ? ode.steps / ode.seconds : 0.0;
   out.motoflex_quick_steps_per_s = quick.seconds > 0.0 ? quick.steps / quick.seconds : 0.0;
-  double quick_total = 0.0;
-  for (std::size_t k = 0; k < quick.steps; ++k) {
-    for (std::size_t j = 0; j < n; ++j) {
-      const double e = (mujoco.angles_rad[k * n + j] - quick.angles_rad[k * n + j]) * kDeg;
-      quick_total += e * e;
-    }
-  }
-  if (quick.steps > 0) out.rms_deg_quick = std::sqrt(quick_total / (quick.steps * n));
+  out.rms_deg_quick = rms_deg_between(mujoco, quick, n);
+  out.motoflex_sparse_steps_per_s = sparse.seconds > 0.0 ? sparse.steps / sparse.seconds : 0.0;
+  out.rms_deg_sparse = rms_deg_between(mujoco, sparse, n);
+  out.rms_deg_sparse_vs_step = rms_deg_between(ode, sparse, n);
   out.mujoco_steps_per_s = mujoco.seconds > 0.0 ? mujoco.steps / mujoco.seconds : 0.0;
   return out;
 }

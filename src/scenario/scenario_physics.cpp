@@ -6,6 +6,7 @@ namespace motoflex {
 
 std::optional<StepSolver> parse_step_solver(const std::string& text) {
   if (text == "step") return StepSolver::kStep;
+  if (text == "sparse") return StepSolver::kSparseStep;
   if (text == "quick") return StepSolver::kQuickStep;
   return std::nullopt;
 }
@@ -17,7 +18,7 @@ void read_step_settings(const YamlValue& physics, RolloutOptions& rollout) {
   }
   if (const auto solver = physics.find("solver")) {
     const auto parsed = parse_step_solver(solver->as_string());
-    if (!parsed) solver->fail("expected 'step' or 'quick'");
+    if (!parsed) solver->fail("expected 'step', 'sparse' or 'quick'");
     rollout.solver = *parsed;
   }
 }

@@ -17,6 +17,7 @@
 #include "motoflex/sim/ode_runtime.hpp"
 #include "ode_axis.hpp"
 #include "ode_quick_step.hpp"
+#include "ode_sparse_step.hpp"
 #include "resolved_parameters.hpp"
 #include "rollout_ode_access.hpp"
 
@@ -115,6 +116,7 @@ struct Rollout::Impl {
   std::vector<std::size_t> flex_joints;              // model joint indices
   double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs (implicit)
   unsigned long quick_step_seed = 0;                 // this rollout's dRandInt state (quick)
+  detail::SparseStepState sparse_lcp;                // this rollout's LCP solver (sparse)
   std::vector<std::unique_ptr<ServoLaw>> servos;     // per actuator
   // Extra rows of an actuated axis that its law asks for (null = none): the armature's inertia
   // row and a separate friction row, each an angular motor between the joint's two bodies.
@@ -660,6 +662,12 @@ Rollout::Rollout(const RobotModel& model, const ParameterSet& parameters,
     throw ModelError("initial pose has the wrong number of joints");
   }
   ensure_ode_ready();
+  if (options.solver == StepSolver::kSparseStep && !detail::ode_lcp_is_replaced()) {
+    throw ModelError(
+        "solver 'sparse' needs motoflex's LCP solver in place of libode's, which this process "
+        "does not allow (libode is bound to its own dxSolveLCP, e.g. in a module loaded with "
+        "local symbols); use solver 'step', which gives the same answers up to rounding");
+  }
   impl_ = std::make_unique<Impl>(model, parameters, options);
   impl_->build_world();
   impl_->build_bodies();
@@ -700,9 +708,18 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
     s.collide_feet();
     // Our ODE error handler throws: an error inside the step interrupts it (see ~Impl).
     s.step_interrupted = true;
-    const int ok = s.options.solver == StepSolver::kStep
-                       ? dWorldStep(s.world, s.options.dt_s)
-                       : detail::seeded_quick_step(s.world, s.options.dt_s, s.quick_step_seed);
+    int ok = 0;
+    switch (s.options.solver) {
+      case StepSolver::kStep:
+        ok = dWorldStep(s.world, s.options.dt_s);
+        break;
+      case StepSolver::kSparseStep:
+        ok = detail::sparse_step(s.world, s.options.dt_s, s.sparse_lcp);
+        break;
+      case StepSolver::kQuickStep:
+        ok = detail::seeded_quick_step(s.world, s.options.dt_s, s.quick_step_seed);
+        break;
+    }
     s.step_interrupted = false;
     s.read_foot_forces();
     dJointGroupEmpty(s.contact_group);
@@ -836,6 +853,10 @@ void Rollout::hinge_frame(std::size_t joint, Eigen::Vector3d& anchor_m,
   dJointGetHingeAxis(j, x);
   anchor_m = {a[0], a[1], a[2]};
   axis = {x[0], x[1], x[2]};
+}
+
+const detail::SparseStepState& RolloutOdeAccess::sparse_lcp(const Rollout& rollout) {
+  return rollout.impl_->sparse_lcp;
 }
 
 dWorldID RolloutOdeAccess::world(const Rollout& rollout) {

@@ -9,6 +9,7 @@
 #include <cstddef>
 
 #include "motoflex/sim/rollout.hpp"
+#include "ode_sparse_step.hpp"
 
 namespace motoflex {
 
@@ -16,6 +17,9 @@ struct RolloutOdeAccess {
   static dWorldID world(const Rollout& rollout);
   static dBodyID body(const Rollout& rollout, std::size_t index);  // nullptr: a static body
   static dJointID joint(const Rollout& rollout, std::size_t index);
+  // The rollout's LCP solver state (solver `sparse`): its counts of solved and handed-back
+  // problems.
+  static const detail::SparseStepState& sparse_lcp(const Rollout& rollout);
 };
 
 }  // namespace motoflex

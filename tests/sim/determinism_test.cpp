@@ -91,6 +91,11 @@ TEST(DeterminismTest, ParallelRolloutsEqualSerialOnes) {
   expect_parallel_equal_to_serial(StepSolver::kStep, "step");
 }
 
+// Solver `sparse`: each rollout owns its LCP solver and warm start (src/sim/ode_sparse_step.cpp).
+TEST(DeterminismTest, ParallelSparseStepRolloutsEqualSerialOnes) {
+  expect_parallel_equal_to_serial(StepSolver::kSparseStep, "sparse");
+}
+
 TEST(DeterminismTest, ParallelQuickStepRolloutsEqualSerialOnes) {
   expect_parallel_equal_to_serial(StepSolver::kQuickStep, "quick");
 }

@@ -28,6 +28,12 @@ struct MujocoComparison {
   // its RMS against MuJoCo, so a user sees both ODE solvers beside MuJoCo's.
   double motoflex_quick_steps_per_s = 0.0;
   double rms_deg_quick = 0.0;
+  // And with motoflex's own solver for dWorldStep's LCP (solver `sparse`): its rate, its RMS
+  // against MuJoCo, and its RMS against the dWorldStep replay (the same LCP up to rounding, so
+  // the difference is what rounding grows into over the replay).
+  double motoflex_sparse_steps_per_s = 0.0;
+  double rms_deg_sparse = 0.0;
+  double rms_deg_sparse_vs_step = 0.0;
   std::string motoflex_end;  // how the motoflex rollout ended ("completed", ...)
   std::string mujoco_version;
   std::size_t geoms = 0;         // geoms of the exported model (collision, visual, floor)

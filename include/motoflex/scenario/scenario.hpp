@@ -70,7 +70,7 @@ struct ScenarioOverrides {
   // A `robot:` value used instead of the scenario's (a truth file's; its path resolves against
   // the file it was written in).
   std::optional<YamlValue> robot;
-  std::optional<StepSolver> solver;  // --solver step|quick
+  std::optional<StepSolver> solver;  // --solver step|sparse|quick
   std::optional<std::string> servo;  // --servo (a servo law's name)
   std::optional<int> flex_sub_bodies;
   std::optional<int> gear_substeps;

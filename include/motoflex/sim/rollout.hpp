@@ -15,12 +15,16 @@
 namespace motoflex {
 
 enum class StepSolver {
-  kStep,       // dWorldStep: exact LCP (Dantzig); bit-reproducible whatever the thread count
-  kQuickStep,  // dWorldQuickStep: iterative and faster. It shuffles constraint rows with ODE's
-               // random generator, which each thread owns a copy of; each rollout loads its own
-               // seed (0 at the start, like a fresh process) around every step, so a quick
-               // rollout is reproducible whatever the threads and parallel ones run side by
-               // side (src/sim/ode_thread_random.cpp)
+  kStep,        // dWorldStep: exact LCP (Dantzig); bit-reproducible whatever the thread count
+  kSparseStep,  // dWorldStep with motoflex's LCP solver (src/sim/box_lcp.hpp): the same exact
+                // LCP, solved by warm-started block pivoting on a sparse LDLᵀ, so the same
+                // answer up to rounding in fewer operations; each rollout owns its solver, so
+                // reproducible whatever the thread count
+  kQuickStep,   // dWorldQuickStep: iterative and faster. It shuffles constraint rows with ODE's
+                // random generator, which each thread owns a copy of; each rollout loads its own
+                // seed (0 at the start, like a fresh process) around every step, so a quick
+                // rollout is reproducible whatever the threads and parallel ones run side by
+                // side (src/sim/ode_thread_random.cpp)
 };
 
 // How the bending joints of flexible links (seed 001 §3.3) carry their spring.
