@@ -4,7 +4,8 @@
 Runs `build/motoflex bench` for each configuration REPEATS times (interleaved, so machine load
 affects all alike), prints the median steps/s and real-time factor per configuration, the
 speed-up of 4 rollouts on 2 threads over 1 thread (each solver), and the gain of universal
-joints.
+joints. Solvers: step (dWorldStep, libode's dense Dantzig LCP), sparse (dWorldStep with
+motoflex's sparse block-pivoting LCP solver: the same LCP) and quick (dWorldQuickStep).
 Usage: scripts/bench_core.py [--repeats 3] [--seconds 5] [--json OUT.json]
 """
 import argparse
@@ -16,6 +17,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BINARY = os.path.join(ROOT, "build", "motoflex")
+SOLVERS = ("step", "sparse", "quick")
 
 CONFIGS = [
     ("nao rigid, ideal servos", ["--robot", "nao", "--servo", "ideal", "--flex", "1"]),
@@ -47,10 +49,10 @@ def main():
     samples = {}
     for _ in range(a.repeats):
         for name, args in CONFIGS:
-            for solver in ("step", "quick"):
+            for solver in SOLVERS:
                 r = bench(args, a.seconds, solver)
                 samples.setdefault((name, solver), []).append(r)
-        for solver in ("step", "quick"):
+        for solver in SOLVERS:
             one = bench(CONFIGS[2][1], a.seconds, solver, ["--rollouts", "4", "--threads", "1"])
             two = bench(CONFIGS[2][1], a.seconds, solver, ["--rollouts", "4", "--threads", "2"])
             samples.setdefault(("threads", solver), []).append(one["wall_s"] / two["wall_s"])
@@ -58,19 +60,20 @@ def main():
     rows = []
     print(f"{'configuration':62s} {'solver':6s} {'steps/s':>9s} {'x realtime':>10s}  end")
     for name, _ in CONFIGS:
-        for solver in ("step", "quick"):
+        for solver in SOLVERS:
             runs = samples[(name, solver)]
             sps = statistics.median(r["steps_per_s"] for r in runs)
             rows.append({"configuration": name, "solver": solver, "steps_per_s": sps,
                          "realtime_factor": sps / 1000.0, "end": runs[0]["end"]})
             print(f"{name:62s} {solver:6s} {sps:9.0f} {sps / 1000.0:10.1f}  {runs[0]['end']}")
-    speedup = {solver: statistics.median(samples[("threads", solver)])
-               for solver in ("step", "quick")}
+    speedup = {solver: statistics.median(samples[("threads", solver)]) for solver in SOLVERS}
     print(f"4 rollouts of the full nao pipeline on 2 threads vs 1 thread: speed-up "
-          f"{speedup['step']:.2f}x exact, {speedup['quick']:.2f}x quick (median of {a.repeats})")
+          f"{speedup['step']:.2f}x exact, {speedup['sparse']:.2f}x sparse, "
+          f"{speedup['quick']:.2f}x quick (median of {a.repeats})")
     if a.json:
         with open(a.json, "w") as f:
             json.dump({"rows": rows, "speedup_4_rollouts_2_threads": speedup["step"],
+                       "speedup_4_rollouts_2_threads_sparse": speedup["sparse"],
                        "speedup_4_rollouts_2_threads_quick": speedup["quick"]}, f, indent=2)
     if a.md:
         write_markdown(a.md, rows, speedup, a.repeats, a.seconds)
@@ -80,14 +83,16 @@ def write_markdown(path, rows, speedup, repeats, seconds):
     """Steps/s per configuration, one column per solver, as the README shows them."""
     lines = [f"Physics steps per second of one rollout on one core, median of {repeats} runs "
              f"of {seconds:g} s; load average at the end {os.getloadavg()[0]:.1f}.", "",
-             "| model | dWorldStep | dWorldQuickStep |", "|---|---|---|"]
+             "| model | dWorldStep | dWorldStep, sparse LCP | sparse / step | dWorldQuickStep |",
+             "|---|---|---|---|---|"]
     for name, _ in CONFIGS:
         sps = {r["solver"]: r["steps_per_s"] for r in rows if r["configuration"] == name}
-        step, quick = (f"{sps[k]:,.0f}".replace(",", " ") for k in ("step", "quick"))
-        lines.append(f"| {name} | {step} | {quick} |")
+        step, sparse, quick = (f"{sps[k]:,.0f}".replace(",", " ") for k in SOLVERS)
+        lines.append(f"| {name} | {step} | {sparse} | {sps['sparse'] / sps['step']:.2f}× | "
+                     f"{quick} |")
     lines += ["", f"4 rollouts of the full Nao pipeline on 2 threads vs 1 thread: speed-up "
-              f"{speedup['step']:.2f}x with dWorldStep, {speedup['quick']:.2f}x with "
-              f"dWorldQuickStep."]
+              f"{speedup['step']:.2f}x with dWorldStep, {speedup['sparse']:.2f}x with the sparse "
+              f"LCP, {speedup['quick']:.2f}x with dWorldQuickStep."]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 

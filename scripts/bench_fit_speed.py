@@ -2,12 +2,13 @@
 """Fit speed on the paper's real problem (issue 20), measured in one run on this machine.
 
 1. Physics steps/s per core of the Nao's full MoToFlex pipeline (100 gear sub-steps, 2 flexible
-   sub-bodies per thigh and tibia), exact (dWorldStep) and quick (dWorldQuickStep, seeded per
-   rollout), `motoflex bench`, REPEATS interleaved runs, medians: one rollout on one thread, and
+   sub-bodies per thigh and tibia), exact (dWorldStep with libode's LCP solver), sparse
+   (dWorldStep with motoflex's: the same LCP) and quick (dWorldQuickStep, seeded per rollout), `motoflex bench`, REPEATS interleaved runs, medians: one rollout on one thread, and
    THREADS rollouts on THREADS threads (per core: the total over THREADS).
 2. motoflex against MuJoCo 2.2.2 on the same exported Nao and motion (the Nao walking on the
    ground with the full servo, the validation walk, 1 ms steps), `motoflex export --check-mujoco`:
-   steps/s of both ODE solvers and of MuJoCo, ratios taken within each run.
+   steps/s of the three ODE solvers and of MuJoCo, ratios taken within each run, and the angle
+   RMS of the sparse replay against the exact one.
 3. The `nao_paper` fit (scenarios/fit/nao_paper.yaml: the paper's 22 genes as 19 free
    parameters, the five 10 s training logs, from the nominal defaults) on 2 threads: evaluations
    and wall time until the best fitness first reaches (1 + TOLERANCE)·F(truth), F(truth) being
@@ -60,17 +61,20 @@ def run_json(command):
     return json.loads(out.strip().splitlines()[-1])
 
 
+SOLVERS = ("step", "sparse", "quick")
+
+
 def steps_per_core(binary, repeats, seconds, threads):
-    """Medians of steps/s per core: one rollout on one thread ("step", "quick"), and THREADS
-    rollouts on THREADS threads divided by THREADS ("step_parallel", "quick_parallel")."""
+    """Medians of steps/s per core: one rollout on one thread (per solver), and THREADS
+    rollouts on THREADS threads divided by THREADS ("<solver>_parallel")."""
     def rate(solver, workers):
         line = run_json([binary, "bench", *PIPELINE, "--seconds", seconds, "--solver", solver,
                          "--rollouts", workers, "--threads", workers])
         return line["steps_per_s"] / workers
 
-    rates = {key: [] for key in ("step", "quick", "step_parallel", "quick_parallel")}
+    rates = {key: [] for solver in SOLVERS for key in (solver, solver + "_parallel")}
     for _ in range(repeats):
-        for solver in ("step", "quick"):
+        for solver in SOLVERS:
             rates[solver].append(rate(solver, 1))
             rates[solver + "_parallel"].append(rate(solver, threads))
     return {key: statistics.median(values) for key, values in rates.items()}
@@ -92,6 +96,10 @@ def against_mujoco(binary, repeats, out):
         "mujoco_steps_per_s": statistics.median(r["mujoco_steps_per_s"] for r in runs),
         "exact_steps_per_s": statistics.median(r["motoflex_steps_per_s"] for r in runs),
         "quick_steps_per_s": statistics.median(r["motoflex_quick_steps_per_s"] for r in runs),
+        "sparse_steps_per_s": statistics.median(r["motoflex_sparse_steps_per_s"] for r in runs),
+        "sparse_over_mujoco": statistics.median(
+            r["motoflex_sparse_steps_per_s"] / r["mujoco_steps_per_s"] for r in runs),
+        "rms_deg_sparse_vs_exact": runs[0]["rms_deg_sparse_vs_step"],
         "exact_over_mujoco": statistics.median(
             r["motoflex_steps_per_s"] / r["mujoco_steps_per_s"] for r in runs),
         "quick_over_mujoco": statistics.median(
@@ -270,13 +278,25 @@ def report_lines(result):
     lines = ["| measure | value |", "|---|---|",
              f"| Nao full pipeline, steps/s per core, exact | {speed['step']:.0f} |",
              f"| Nao full pipeline, steps/s per core, quick | {speed['quick']:.0f} |"]
+    if "sparse" in speed:
+        lines.insert(3, f"| Nao full pipeline, steps/s per core, exact with the sparse LCP "
+                        f"(`solver: sparse`) | {speed['sparse']:.0f} |")
     if "step_parallel" in speed:
         threads = result["threads"]
-        lines.append(f"| same, {threads} rollouts on {threads} threads, per core: exact, quick | "
-                     f"{speed['step_parallel']:.0f}, {speed['quick_parallel']:.0f} |")
+        if "sparse_parallel" in speed:
+            lines.append(f"| same, {threads} rollouts on {threads} threads, per core: exact, "
+                         f"sparse, quick | {speed['step_parallel']:.0f}, "
+                         f"{speed['sparse_parallel']:.0f}, {speed['quick_parallel']:.0f} |")
+        else:
+            lines.append(f"| same, {threads} rollouts on {threads} threads, per core: exact, "
+                         f"quick | {speed['step_parallel']:.0f}, {speed['quick_parallel']:.0f} |")
     lines += [f"| {mujoco['model']}: MuJoCo steps/s | {mujoco['mujoco_steps_per_s']:.0f} |",
-              f"| same: motoflex / MuJoCo, exact | {mujoco['exact_over_mujoco']:.2f} |",
-              f"| same: motoflex / MuJoCo, quick | {mujoco['quick_over_mujoco']:.2f} |"]
+              f"| same: motoflex / MuJoCo, exact | {mujoco['exact_over_mujoco']:.2f} |"]
+    if "sparse_over_mujoco" in mujoco:
+        lines += [f"| same: motoflex / MuJoCo, sparse | {mujoco['sparse_over_mujoco']:.2f} |",
+                  f"| same: sparse vs exact replay, angle RMS (deg) | "
+                  f"{mujoco['rms_deg_sparse_vs_exact']:.2g} |"]
+    lines.append(f"| same: motoflex / MuJoCo, quick | {mujoco['quick_over_mujoco']:.2f} |")
     fit = result.get("fit")
     if fit:
         reach = (f"{fit['evaluations_to_target']} evaluations, {fit['seconds_to_target']:.0f} s"

@@ -1,18 +1,22 @@
 #!/usr/bin/env python3
-"""QuickStep against the exact solver: accuracy on the reference walks, reproducibility and
-speed of a fit with 1, 2 and 4 workers (threads and MPI ranks).
+"""The two other solvers against the exact one: `sparse` (dWorldStep's LCP solved by motoflex's
+sparse block-pivoting solver; the same LCP) and `quick` (dWorldQuickStep; a different model).
+Accuracy on the reference walks, reproducibility and speed of a fit with 1, 2 and 4 workers
+(threads and MPI ranks).
 
 1. Accuracy. Every recording of reference_data/nao (four walks and a kick for training; two
    walks, a squat and a held excitation for validation) simulated from the MoToFlex truth
-   (`motoflex simulate scenarios/truth/nao_motoflex.yaml --recording R`) with `--solver step` and `--solver quick`:
-   joint-angle RMS and maximum between the two, and each one's RMS against the recorded log
-   (recorded with the exact solver plus sensor noise and quantisation).
+   (`motoflex simulate scenarios/truth/nao_motoflex.yaml --recording R`) with `--solver step`,
+   `--solver sparse` and `--solver quick`: joint-angle RMS and maximum of each against step,
+   and each one's RMS against the recorded log (recorded with the exact solver plus sensor
+   noise and quantisation).
 2. Workers. The nao_quick fit (its free parameters, start, strategy and seed; `--seed 3`) for
    GENERATIONS generations with each solver, on 1 thread, 2 threads, 2 MPI ranks and 4 MPI
    ranks (1 thread each; 4 ranks oversubscribe 2 cores): whether best.json's fitness and
    parameters are bit-identical to the 1-thread run, and the wall time of the fit loop.
    Each thread draws QuickStep's row order from its own copy of ODE's generator
-   (src/sim/ode_thread_random.cpp), so threads speed QuickStep up as they do the exact solver.
+   (src/sim/ode_thread_random.cpp), and each sparse rollout owns its LCP solver
+   (src/sim/ode_sparse_step.cpp), so threads speed them up as they do the exact solver.
 
     scripts/bench_quickstep.py [--binary build/motoflex] [--out benchmarks/quickstep]
                                [--generations 2] [--no-mpi]
@@ -68,18 +72,26 @@ def simulate(binary, recording, solver, out):
     return read_log(out)[1]
 
 
+SOLVERS = ("step", "sparse", "quick")
+
+
 def accuracy(binary, tmp):
     rows = []
     for recording in RECORDINGS:
         recorded = read_log(os.path.join(ROOT, "reference_data", "nao", recording + ".csv"))[1]
-        step = simulate(binary, recording, "step", os.path.join(tmp, "step.csv"))
-        quick = simulate(binary, recording, "quick", os.path.join(tmp, "quick.csv"))
-        rms, worst = angle_error_deg(step, quick)
-        rows.append({"recording": recording, "frames_step": len(step), "frames_quick": len(quick),
-                     "rms_step_vs_quick_deg": rms, "max_step_vs_quick_deg": worst,
-                     "rms_step_vs_log_deg": angle_error_deg(step, recorded)[0],
-                     "rms_quick_vs_log_deg": angle_error_deg(quick, recorded)[0]})
-        print(f"  {recording}: step vs quick {rms:.3f} deg RMS", flush=True)
+        runs = {solver: simulate(binary, recording, solver, os.path.join(tmp, solver + ".csv"))
+                for solver in SOLVERS}
+        row = {"recording": recording}
+        for solver in SOLVERS:
+            row[f"frames_{solver}"] = len(runs[solver])
+            row[f"rms_{solver}_vs_log_deg"] = angle_error_deg(runs[solver], recorded)[0]
+        for solver in ("sparse", "quick"):
+            rms, worst = angle_error_deg(runs["step"], runs[solver])
+            row[f"rms_step_vs_{solver}_deg"] = rms
+            row[f"max_step_vs_{solver}_deg"] = worst
+        rows.append(row)
+        print(f"  {recording}: step vs sparse {row['rms_step_vs_sparse_deg']:.2e} deg RMS, "
+              f"step vs quick {row['rms_step_vs_quick_deg']:.3f}", flush=True)
     return rows
 
 
@@ -122,7 +134,7 @@ def workers(binary, tmp, generations, use_mpi):
     if use_mpi:
         setups += [("2 MPI ranks", 1, 2), ("4 MPI ranks", 1, 4)]
     rows = []
-    for solver in ("step", "quick"):
+    for solver in SOLVERS:
         config = quick_fit_config(tmp, solver)
         reference = None
         for name, threads, ranks in setups:
@@ -138,12 +150,14 @@ def workers(binary, tmp, generations, use_mpi):
 
 
 def markdown(acc, work):
-    out = ["| recording | step vs quick: RMS (deg) | max (deg) | step vs log RMS (deg) | "
-           "quick vs log RMS (deg) |", "|---|---|---|---|---|"]
+    out = ["| recording | step vs sparse: RMS (deg) | max (deg) | step vs quick: RMS (deg) | "
+           "max (deg) | step vs log RMS (deg) | sparse vs log RMS (deg) | quick vs log RMS (deg) |",
+           "|---|---|---|---|---|---|---|---|"]
     for r in acc:
-        out.append(f"| {r['recording']} | {r['rms_step_vs_quick_deg']:.3f} | "
+        out.append(f"| {r['recording']} | {r['rms_step_vs_sparse_deg']:.2g} | "
+                   f"{r['max_step_vs_sparse_deg']:.2g} | {r['rms_step_vs_quick_deg']:.3f} | "
                    f"{r['max_step_vs_quick_deg']:.2f} | {r['rms_step_vs_log_deg']:.3f} | "
-                   f"{r['rms_quick_vs_log_deg']:.3f} |")
+                   f"{r['rms_sparse_vs_log_deg']:.3f} | {r['rms_quick_vs_log_deg']:.3f} |")
     out += ["", "| solver | workers | fit wall s | speed-up vs 1 thread | best.json bit-identical "
             "to 1 thread |", "|---|---|---|---|---|"]
     one = {r["solver"]: r["wall_s"] for r in work if r["workers"] == "1 thread"}
@@ -163,7 +177,8 @@ def main():
     args = parser.parse_args()
     use_mpi = not args.no_mpi and shutil.which("mpirun") is not None
     with tempfile.TemporaryDirectory() as tmp:
-        print("accuracy: exact vs quick solver on the reference recordings", flush=True)
+        print("accuracy: sparse and quick against the exact solver on the reference recordings",
+              flush=True)
         acc = accuracy(args.binary, tmp)
         print(f"workers: nao_quick fit, {args.generations} generations", flush=True)
         work = workers(args.binary, tmp, args.generations, use_mpi)
@@ -173,7 +188,7 @@ def main():
                   indent=2)
     table = markdown(acc, work)
     with open(os.path.join(args.out, "report.md"), "w") as f:
-        f.write("# QuickStep vs dWorldStep\n\n" + table)
+        f.write("# The sparse and quick solvers vs dWorldStep\n\n" + table)
     print(table, end="")
     identical = all(r["identical_to_1_thread"] for r in work)
     return 0 if identical else 1

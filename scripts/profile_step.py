@@ -10,8 +10,8 @@ percent on this code (dense arithmetic in both ODE and motoflex).
 
 Stages, as shares of motoflex::Rollout::step (everything a physics step does):
   ODE step (dWorldStep / dWorldQuickStep), and within it the LCP solver
-  (dxSolveLCP for dWorldStep; QuickStep's SOR iterations are inlined in Debian's ODE, so no
-  share is given there) and the rest (Jacobians, the
+  (dxSolveLCP for dWorldStep: libode's, or motoflex's with --solver sparse; QuickStep's SOR
+  iterations are inlined in Debian's ODE, so no share is given there) and the rest (Jacobians, the
   system matrix and its factorisation, integration);
   collision (Rollout::Impl::collide_feet: ODE's dCollide per foot shape and the contact joints);
   servo pipeline (Rollout::Impl::apply_servos: PID, motor, gear, friction), and within it the
@@ -36,6 +36,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FULL = ["--robot", "nao", "--servo", "motoflex", "--flex", "2", "--substeps", "100"]
 CASES = {
     "nao full pipeline, dWorldStep": FULL + ["--solver", "step"],
+    "nao full pipeline, dWorldStep, sparse LCP": FULL + ["--solver", "sparse"],
     "nao full pipeline, dWorldQuickStep": FULL + ["--solver", "quick"],
     "nao rigid, ideal servos, dWorldStep": ["--robot", "nao", "--servo", "ideal", "--solver",
                                             "step"],

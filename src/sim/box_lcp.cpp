@@ -24,12 +24,17 @@ bool is_fixed(double lo, double hi) {
 bool BoxLcpSolver::solve(const BoxLcpView& problem, double* x_out, double* lo_out, double* hi_out,
                          double* w_out) {
   ++counts_.problems;
-  const bool warm = same_structure(problem);
+  counts_.rows = problem.n;
+  // The same structure: size, friction rows, and every nonzero of A at a known place (as many
+  // nonzeros as the known places hold). Then the elimination order and the warm start carry
+  // over. A known place may hold an exact zero now and then (a contact normal along an axis).
+  const bool same = same_rows(problem);
+  const bool warm = same && read_values(problem) == count_lower_nonzeros(problem);
   if (!warm) {
-    read_structure(problem);
+    read_structure(problem, same);
     order_rows();
+    read_values(problem);
   }
-  read_values(problem);
   const std::size_t n = n_;
   state_.resize(n);
   for (std::size_t p = 0; p < n; ++p) {
@@ -77,31 +82,35 @@ bool BoxLcpSolver::solve(const BoxLcpView& problem, double* x_out, double* lo_ou
   return true;
 }
 
-bool BoxLcpSolver::same_structure(const BoxLcpView& problem) const {
+bool BoxLcpSolver::same_rows(const BoxLcpView& problem) const {
   const unsigned n = problem.n;
   if (n != n_ || previous_state_.size() != n) return false;
   for (unsigned i = 0; i < n; ++i) {
     const bool friction = problem.findex != nullptr && problem.findex[i] >= 0;
     if (friction != (friction_[i] != 0)) return false;
   }
-  for (unsigned i = 0; i < n; ++i) {
-    const double* row = problem.a_lower + static_cast<std::size_t>(i) * problem.stride;
-    const unsigned char* known = adjacency_.data() + static_cast<std::size_t>(i) * n;
-    for (unsigned j = 0; j < i; ++j) {
-      if ((row[j] != 0.0) != (known[j] != 0)) return false;
-    }
-  }
   return true;
 }
 
-void BoxLcpSolver::read_structure(const BoxLcpView& problem) {
+std::size_t BoxLcpSolver::count_lower_nonzeros(const BoxLcpView& problem) {
+  std::size_t count = 0;
+  for (unsigned i = 0; i < problem.n; ++i) {
+    const double* row = problem.a_lower + static_cast<std::size_t>(i) * problem.stride;
+    for (unsigned j = 0; j < i; ++j) count += row[j] != 0.0 ? 1 : 0;
+  }
+  return count;
+}
+
+// A's pattern; with the same rows as before (`keep_known`), the known places stay in it, so
+// that places which are zero only now and then do not make the order change back and forth.
+void BoxLcpSolver::read_structure(const BoxLcpView& problem, bool keep_known) {
   const unsigned n = problem.n;
   n_ = n;
   friction_.assign(n, 0);
   for (unsigned i = 0; i < n; ++i) {
     friction_[i] = problem.findex != nullptr && problem.findex[i] >= 0 ? 1 : 0;
   }
-  adjacency_.assign(static_cast<std::size_t>(n) * n, 0);
+  if (!keep_known) adjacency_.assign(static_cast<std::size_t>(n) * n, 0);
   for (unsigned i = 0; i < n; ++i) {
     const double* row = problem.a_lower + static_cast<std::size_t>(i) * problem.stride;
     for (unsigned j = 0; j < i; ++j) {
@@ -157,7 +166,13 @@ void BoxLcpSolver::order_rows() {
       }
     }
   }
-  // L's row patterns by position.
+  index_factor_entries();
+}
+
+// From the elimination order and its fill: L's row patterns by position, the entry pairs that
+// make each entry of L, and A's nonzeros by position.
+void BoxLcpSolver::index_factor_entries() {
+  const std::size_t n = n_;
   pattern_start_.assign(n + 1, 0);
   pattern_.clear();
   for (std::size_t p = 0; p < n; ++p) {
@@ -168,6 +183,31 @@ void BoxLcpSolver::order_rows() {
     }
   }
   pattern_start_[n] = pattern_.size();
+  // For each entry (p, r) of L: the pairs of entries (p, t) and (r, t), t < r, whose products
+  // make L_pr (the sorted patterns of rows p and r merged).
+  pair_start_.assign(pattern_.size() + 1, 0);
+  pairs_.clear();
+  for (std::size_t p = 0; p < n; ++p) {
+    for (std::size_t e = pattern_start_[p]; e < pattern_start_[p + 1]; ++e) {
+      pair_start_[e] = pairs_.size();
+      const std::size_t r = pattern_[e];
+      std::size_t fp = pattern_start_[p];
+      std::size_t fr = pattern_start_[r];
+      while (fp < e && fr < pattern_start_[r + 1]) {
+        if (pattern_[fp] < pattern_[fr]) {
+          ++fp;
+        } else if (pattern_[fr] < pattern_[fp]) {
+          ++fr;
+        } else {
+          pairs_.push_back({static_cast<unsigned>(fp), static_cast<unsigned>(fr)});
+          ++fp;
+          ++fr;
+        }
+      }
+    }
+  }
+  pair_start_[pattern_.size()] = pairs_.size();
+  counts_.l_entries = static_cast<long>(pattern_.size());
   // A's off-diagonal nonzeros by position.
   row_start_.assign(n + 1, 0);
   row_column_.clear();
@@ -183,7 +223,9 @@ void BoxLcpSolver::order_rows() {
   row_start_[n] = row_column_.size();
 }
 
-void BoxLcpSolver::read_values(const BoxLcpView& problem) {
+// A's values at the known places, by position. Returns how many of the known places in A's
+// lower triangle hold a nonzero.
+std::size_t BoxLcpSolver::read_values(const BoxLcpView& problem) {
   const std::size_t n = n_;
   const auto a = [&problem](std::size_t i, std::size_t j) {
     return i >= j ? problem.a_lower[i * problem.stride + j]
@@ -194,6 +236,7 @@ void BoxLcpSolver::read_values(const BoxLcpView& problem) {
   lo_.resize(n);
   hi_.resize(n);
   row_value_.resize(row_column_.size());
+  std::size_t nonzeros = 0;
   pattern_a_.resize(pattern_.size());
   for (std::size_t p = 0; p < n; ++p) {
     const std::size_t i = order_[p];
@@ -202,15 +245,18 @@ void BoxLcpSolver::read_values(const BoxLcpView& problem) {
     lo_[p] = problem.lo[i];
     hi_[p] = problem.hi[i];
     for (std::size_t e = row_start_[p]; e < row_start_[p + 1]; ++e) {
-      row_value_[e] = a(i, order_[row_column_[e]]);
+      const std::size_t j = order_[row_column_[e]];
+      row_value_[e] = a(i, j);
+      if (j < i && row_value_[e] != 0.0) ++nonzeros;
     }
     for (std::size_t e = pattern_start_[p]; e < pattern_start_[p + 1]; ++e) {
       pattern_a_[e] = a(i, order_[pattern_[e]]);
     }
   }
   l_.assign(pattern_.size(), 0.0);
+  ld_.assign(pattern_.size(), 0.0);
   d_.assign(n, 0.0);
-  accumulator_.assign(n, 0.0);
+  return nonzeros;
 }
 
 // LDLᵀ of A restricted to the free positions below `free_.size()`, from the first position
@@ -226,29 +272,29 @@ bool BoxLcpSolver::factor_free_rows() {
     if (free_[p] == 0) {
       std::fill(l_.begin() + static_cast<std::ptrdiff_t>(begin),
                 l_.begin() + static_cast<std::ptrdiff_t>(end), 0.0);
+      std::fill(ld_.begin() + static_cast<std::ptrdiff_t>(begin),
+                ld_.begin() + static_cast<std::ptrdiff_t>(end), 0.0);
       d_[p] = 0.0;
       continue;
     }
     ++counts_.factor_rows;
-    // L_pr = (A_pr − Σ_t L_pt D_t L_rt) / D_r for the free r in the pattern, in increasing r;
-    // the accumulator holds row p's entries computed so far (zero elsewhere).
+    // L_pr = (A_pr − Σ_t L_pt D_t L_rt) / D_r for the free r in the pattern, in increasing r,
+    // over the t in both rows' patterns (entries of a row that is not free are 0).
     double diagonal = diagonal_[p];
     for (std::size_t e = begin; e < end; ++e) {
       const std::size_t r = pattern_[e];
       double value = 0.0;
       if (free_[r] != 0) {
         double sum = pattern_a_[e];
-        for (std::size_t f = pattern_start_[r]; f < pattern_start_[r + 1]; ++f) {
-          const std::size_t t = pattern_[f];
-          sum -= accumulator_[t] * d_[t] * l_[f];
+        for (std::size_t k = pair_start_[e]; k < pair_start_[e + 1]; ++k) {
+          sum -= l_[pairs_[k].of_row] * ld_[pairs_[k].of_column];
         }
         value = sum / d_[r];
         diagonal -= value * value * d_[r];
       }
       l_[e] = value;
-      accumulator_[r] = value;
+      ld_[e] = value * d_[r];
     }
-    for (std::size_t e = begin; e < end; ++e) accumulator_[pattern_[e]] = 0.0;
     if (!(diagonal > 0.0)) return false;
     d_[p] = diagonal;
   }

@@ -68,14 +68,18 @@ class BoxLcpSolver {
     long orderings = 0;     // elimination orders computed (the others were reused)
     long factor_rows = 0;   // rows of L computed, over all factorisations
     long pivot_rounds = 0;  // linear solves, over both phases of all problems
+    long rows = 0;          // size of the last problem
+    long l_entries = 0;     // off-diagonal entries of L in the last elimination order
   };
   const Counts& counts() const { return counts_; }
 
  private:
-  bool same_structure(const BoxLcpView& problem) const;
-  void read_structure(const BoxLcpView& problem);
+  bool same_rows(const BoxLcpView& problem) const;
+  static std::size_t count_lower_nonzeros(const BoxLcpView& problem);
+  void read_structure(const BoxLcpView& problem, bool keep_known);
   void order_rows();
-  void read_values(const BoxLcpView& problem);
+  void index_factor_entries();
+  std::size_t read_values(const BoxLcpView& problem);
   bool factor_free_rows();
   void solve_free_rows();
   bool solve_phase(std::size_t rows);
@@ -85,7 +89,6 @@ class BoxLcpSolver {
   unsigned n_ = 0;
   std::vector<unsigned char> friction_;
   std::vector<unsigned char> adjacency_;
-  std::vector<unsigned char> new_adjacency_;
   // Elimination order: position → problem index, and back; friction rows take the last
   // positions, from first_friction_ on.
   std::vector<unsigned> order_;
@@ -111,8 +114,15 @@ class BoxLcpSolver {
   std::vector<unsigned> pattern_;
   std::vector<double> pattern_a_;
   std::vector<double> l_;
+  std::vector<double> ld_;  // L_pr · D_r per entry
   std::vector<double> d_;
-  std::vector<double> accumulator_;
+  // Per entry (p, r) of L, the range in pairs_ of the entries (p, t), (r, t) with t < r.
+  struct EntryPair {
+    unsigned of_row;     // entry (p, t)
+    unsigned of_column;  // entry (r, t)
+  };
+  std::vector<std::size_t> pair_start_;
+  std::vector<EntryPair> pairs_;
   // The factorisation covers positions below factored_rows_, with the free set factored_free_.
   std::size_t factored_rows_ = 0;
   std::vector<unsigned char> factored_free_;

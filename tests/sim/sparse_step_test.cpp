@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct Replay {
   std::vector<double> angles_rad;  // [step × joint]
   std::vector<double> torso_z_m;
   long problems = 0, solved = 0, fallbacks = 0;
+  detail::BoxLcpSolver::Counts counts;
 };
 
 // The bundled Nao scenario (full MoToFlex servo, flexible links with 2 sub-bodies, 100 gear
@@ -51,6 +53,7 @@ Replay replay(const Scenario& s, StepSolver solver, double seconds) {
   out.problems = lcp.solver.counts().problems;
   out.solved = lcp.solver.counts().solved;
   out.fallbacks = lcp.fallbacks;
+  out.counts = lcp.solver.counts();
   return out;
 }
 
@@ -80,6 +83,18 @@ TEST(SparseStepTest, NaoMotionAgreesWithDWorldStepToRounding) {
   EXPECT_GE(sparse.problems, 1000);
   EXPECT_EQ(sparse.solved, sparse.problems);
   EXPECT_EQ(sparse.fallbacks, 0);
+  // The warm start holds: two pivot rounds per problem (phase 1 and phase 2) when every guess
+  // is right. And the sparse factor is far smaller than the dense triangle.
+  const auto& c = sparse.counts;
+  const double rounds_per_problem = static_cast<double>(c.pivot_rounds) / c.problems;
+  const long dense_entries = c.rows * (c.rows - 1) / 2;
+  std::cout << "Nao, flexible legs: " << c.rows << " rows, L has " << c.l_entries << " of "
+            << dense_entries << " entries; " << rounds_per_problem << " pivot rounds and "
+            << static_cast<double>(c.factor_rows) / c.problems << " factor rows per problem, "
+            << c.orderings << " elimination orders for " << c.problems << " problems\n";
+  EXPECT_LE(rounds_per_problem, 2.2);
+  EXPECT_LT(c.l_entries, dense_entries / 2);
+  EXPECT_LT(c.orderings, c.problems / 10);
 }
 
 }  // namespace
