@@ -19,6 +19,26 @@ bool is_fixed(double lo, double hi) {
   return lo == hi;
 }
 
+// Per position p (`order`: position → problem index), the positions q adjacent to p in `graph`
+// (n × n bytes by problem index), q < p only when `earlier_only`, ascending, as ranges
+// [start[p], start[p + 1]) of `entries`.
+void list_by_position(const std::vector<unsigned char>& graph, const std::vector<unsigned>& order,
+                      bool earlier_only, std::vector<std::size_t>& start,
+                      std::vector<unsigned>& entries) {
+  const std::size_t n = order.size();
+  start.assign(n + 1, 0);
+  entries.clear();
+  for (std::size_t p = 0; p < n; ++p) {
+    start[p] = entries.size();
+    const unsigned char* row = graph.data() + static_cast<std::size_t>(order[p]) * n;
+    const std::size_t end = earlier_only ? p : n;
+    for (std::size_t q = 0; q < end; ++q) {
+      if (q != p && row[order[q]] != 0) entries.push_back(static_cast<unsigned>(q));
+    }
+  }
+  start[n] = entries.size();
+}
+
 }  // namespace
 
 bool BoxLcpSolver::solve(const BoxLcpView& problem, double* x_out, double* lo_out, double* hi_out,
@@ -173,16 +193,7 @@ void BoxLcpSolver::order_rows() {
 // make each entry of L, and A's nonzeros by position.
 void BoxLcpSolver::index_factor_entries() {
   const std::size_t n = n_;
-  pattern_start_.assign(n + 1, 0);
-  pattern_.clear();
-  for (std::size_t p = 0; p < n; ++p) {
-    pattern_start_[p] = pattern_.size();
-    const std::size_t i = order_[p];
-    for (std::size_t r = 0; r < p; ++r) {
-      if (filled_[i * n + order_[r]] != 0) pattern_.push_back(static_cast<unsigned>(r));
-    }
-  }
-  pattern_start_[n] = pattern_.size();
+  list_by_position(filled_, order_, true, pattern_start_, pattern_);
   // For each entry (p, r) of L: the pairs of entries (p, t) and (r, t), t < r, whose products
   // make L_pr (the sorted patterns of rows p and r merged).
   pair_start_.assign(pattern_.size() + 1, 0);
@@ -209,18 +220,7 @@ void BoxLcpSolver::index_factor_entries() {
   pair_start_[pattern_.size()] = pairs_.size();
   counts_.l_entries = static_cast<long>(pattern_.size());
   // A's off-diagonal nonzeros by position.
-  row_start_.assign(n + 1, 0);
-  row_column_.clear();
-  for (std::size_t p = 0; p < n; ++p) {
-    row_start_[p] = row_column_.size();
-    const std::size_t i = order_[p];
-    for (std::size_t q = 0; q < n; ++q) {
-      if (q != p && adjacency_[i * n + order_[q]] != 0) {
-        row_column_.push_back(static_cast<unsigned>(q));
-      }
-    }
-  }
-  row_start_[n] = row_column_.size();
+  list_by_position(adjacency_, order_, false, row_start_, row_column_);
 }
 
 // A's values at the known places, by position. Returns how many of the known places in A's
