@@ -69,6 +69,21 @@ class SimulateTest(unittest.TestCase):
         with self.assertRaisesRegex(motoflex.InputError, "robot.yaml|no such|not"):
             motoflex.Scenario(os.path.join(SOURCE, "scenarios", "no_such.yaml"))
 
+    def test_sparse_solver_gives_the_exact_solvers_motion(self):
+        # solver 'sparse': dWorldStep's LCP solved by motoflex's solver, here inside the module
+        # (src/sim/ode_sparse_step.cpp); the same LCP, so the same motion up to rounding (the
+        # bundled scenario's encoders are exact; measured 2e-15 rad over its first second).
+        step = motoflex.Scenario(NAO, solver="step", duration_s=1.0).simulate()
+        sparse = motoflex.Scenario(NAO, solver="sparse", duration_s=1.0).simulate()
+        self.assertEqual(sparse["frames_completed"], step["frames_completed"])
+        np.testing.assert_allclose(sparse["measured_rad"], step["measured_rad"], rtol=0,
+                                   atol=1e-9)
+        np.testing.assert_allclose(sparse["torso_position_m"], step["torso_position_m"],
+                                   rtol=0, atol=1e-9)
+        self.assertGreater(np.ptp(step["measured_rad"], axis=0).max(), 0.05)  # the robot moved
+        with self.assertRaisesRegex(motoflex.InputError, "sparse"):
+            motoflex.Scenario(NAO, solver="dense")
+
     def test_torques_and_torso_come_as_arrays(self):
         result = motoflex.simulate(NAO, duration_s=0.2, record_torques=True)
         frames = result["frames_completed"]
