@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "motoflex/scenario/scenario.hpp"
+#include "motoflex/sim/robot_parameter_check.hpp"
 #include "motoflex/sim/rollout.hpp"
 #include "ode_sparse_step.hpp"
 #include "rollout_ode_access.hpp"
@@ -95,6 +96,43 @@ TEST(SparseStepTest, NaoMotionAgreesWithDWorldStepToRounding) {
   EXPECT_LE(rounds_per_problem, 2.2);
   EXPECT_LT(c.l_entries, dense_entries / 2);
   EXPECT_LT(c.orderings, c.problems / 10);
+}
+
+// Every bundled robot (an arm on a table, a servo pendulum, the original program's box Nao, the
+// TITAN-VIII quadruped with four feet on the ground) standing for 0.5 s from its stand pose: the
+// sparse solver settles every LCP itself and the motion is dWorldStep's to rounding.
+TEST(SparseStepTest, EveryBundledRobotGivesDWorldStepsMotion) {
+  for (const std::string name : {"mini_arm", "servo_pendulum", "nao_motoflex_2011", "titan8"}) {
+    SCOPED_TRACE(name);
+    const RobotModel model =
+        load_robot(std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/robots/" + name, {});
+    const ParameterSet parameters(model.parameters);
+    const std::vector<double> pose = model.stand_pose_vector();
+    RolloutOptions options;
+    options.servo = model.default_servo;
+    std::vector<std::vector<double>> angles_rad(2);
+    long solved = 0, fallbacks = 0;
+    for (const StepSolver solver : {StepSolver::kStep, StepSolver::kSparseStep}) {
+      options.solver = solver;
+      Rollout rollout(model, parameters, options, pose);
+      for (int k = 0; k < 500 && rollout.step(pose.data(), pose.data()); ++k) {
+        for (std::size_t j = 0; j < rollout.joints(); ++j) {
+          angles_rad[solver == StepSolver::kSparseStep].push_back(rollout.joint_angle_rad(j));
+        }
+      }
+      if (solver == StepSolver::kSparseStep) {
+        solved = RolloutOdeAccess::sparse_lcp(rollout).solver.counts().solved;
+        fallbacks = RolloutOdeAccess::sparse_lcp(rollout).fallbacks;
+      }
+    }
+    ASSERT_EQ(angles_rad[0].size(), angles_rad[1].size());
+    ASSERT_EQ(angles_rad[0].size(), 500 * model.actuators.size());
+    for (std::size_t k = 0; k < angles_rad[0].size(); ++k) {
+      ASSERT_NEAR(angles_rad[0][k], angles_rad[1][k], 1e-9) << "value " << k;
+    }
+    EXPECT_EQ(solved, 500);
+    EXPECT_EQ(fallbacks, 0);
+  }
 }
 
 }  // namespace
