@@ -74,7 +74,7 @@ bool BoxLcpSolver::solve(const BoxLcpView& problem, double* x_out, double* lo_ou
       if (normal_force == 0.0) {
         lo_[p] = hi_[p] = 0.0;
       } else {
-        hi_[p] = std::fabs(problem.hi[i] * normal_force);
+        hi_[p] = std::fabs(problem.hi[i * problem.vector_stride] * normal_force);
         lo_[p] = -hi_[p];
       }
     }
@@ -82,11 +82,12 @@ bool BoxLcpSolver::solve(const BoxLcpView& problem, double* x_out, double* lo_ou
   if (!solve_phase(n)) return false;
 
   ++counts_.solved;
-  for (std::size_t p = 0; p < n; ++p) x_out[order_[p]] = x_[p];
+  const std::size_t stride = problem.vector_stride;
+  for (std::size_t p = 0; p < n; ++p) x_out[order_[p] * stride] = x_[p];
   if (lo_out != nullptr && hi_out != nullptr) {
     for (std::size_t p = first_friction_; p < n; ++p) {
-      lo_out[order_[p]] = lo_[p];
-      hi_out[order_[p]] = hi_[p];
+      lo_out[order_[p] * stride] = lo_[p];
+      hi_out[order_[p] * stride] = hi_[p];
     }
   }
   if (w_out != nullptr) {
@@ -241,9 +242,9 @@ std::size_t BoxLcpSolver::read_values(const BoxLcpView& problem) {
   for (std::size_t p = 0; p < n; ++p) {
     const std::size_t i = order_[p];
     diagonal_[p] = a(i, i);
-    b_[p] = problem.b[i];
-    lo_[p] = problem.lo[i];
-    hi_[p] = problem.hi[i];
+    b_[p] = problem.b[i * problem.vector_stride];
+    lo_[p] = problem.lo[i * problem.vector_stride];
+    hi_[p] = problem.hi[i * problem.vector_stride];
     for (std::size_t e = row_start_[p]; e < row_start_[p + 1]; ++e) {
       const std::size_t j = order_[row_column_[e]];
       row_value_[e] = a(i, j);

@@ -38,7 +38,8 @@ namespace motoflex::detail {
 enum class BoxRowState : std::uint8_t { kFree, kAtLower, kAtUpper };
 
 // One box LCP in ODE's storage: A's lower triangle row-major with row stride `stride` (ODE's
-// dPAD(n)); b, lo, hi, findex of length n (findex may be null: no friction rows).
+// dPAD(n)); b, lo, hi of n entries `vector_stride` apart (ODE interleaves b with x and lo with
+// hi: 2); findex of length n, contiguous (null: no friction rows).
 struct BoxLcpView {
   unsigned n = 0;
   const double* a_lower = nullptr;
@@ -46,6 +47,7 @@ struct BoxLcpView {
   const double* b = nullptr;
   const double* lo = nullptr;
   const double* hi = nullptr;
+  std::size_t vector_stride = 1;
   const int* findex = nullptr;
 };
 
@@ -54,10 +56,11 @@ struct BoxLcpView {
 // are reused when the next problem has the same size, friction rows and sparsity.
 class BoxLcpSolver {
  public:
-  // Solves `problem`; on success writes x (length n), the friction bounds it used into
-  // lo_out/hi_out when they are not null (ODE overwrites its friction rows' bounds the same
-  // way), w = A·x − b into w_out when not null, and returns true. Returns false when pivoting
-  // did not settle within its iteration limit or a pivot was not positive; x_out, lo_out,
+  // Solves `problem`; on success writes x (n entries, the view's vector_stride apart), the
+  // friction bounds it used into lo_out/hi_out when they are not null (same stride; ODE
+  // overwrites its friction rows' bounds the same way; they may be the view's lo and hi),
+  // w = A·x − b into w_out (contiguous) when not null, and returns true. Returns false when
+  // pivoting did not settle within its iteration limit or a pivot was not positive; x_out, lo_out,
   // hi_out and w_out are then untouched, and the caller falls back to ODE's own solver.
   bool solve(const BoxLcpView& problem, double* x_out, double* lo_out, double* hi_out,
              double* w_out);

@@ -83,35 +83,20 @@ void dxSolveLCP(dxWorldProcessMemArena* arena, unsigned n, double* a, double* pa
     libode_solve_lcp()(arena, n, a, pairs_bx, w, nub, pairs_lh, findex);
     return;
   }
-  SparseStepState::Scratch& scratch = state->scratch;
-  scratch.b.resize(n);
-  scratch.lo.resize(n);
-  scratch.hi.resize(n);
-  scratch.x.resize(n);
-  for (unsigned i = 0; i < n; ++i) {
-    scratch.b[i] = pairs_bx[2 * i];
-    scratch.lo[i] = pairs_lh[2 * i];
-    scratch.hi[i] = pairs_lh[2 * i + 1];
-  }
-  scratch.lo_out = scratch.lo;
-  scratch.hi_out = scratch.hi;
+  // ODE's arrays as they are: b and x interleaved in pairs_bx, lo and hi in pairs_lh. The
+  // solver writes x and the friction bounds back only once it has solved the problem, so a
+  // problem it hands back reaches libode's solver untouched.
   BoxLcpView problem;
   problem.n = n;
   problem.a_lower = a;
   problem.stride = n > 1 ? (n + 3u) & ~3u : n;
-  problem.b = scratch.b.data();
-  problem.lo = scratch.lo.data();
-  problem.hi = scratch.hi.data();
+  problem.b = pairs_bx;
+  problem.lo = pairs_lh;
+  problem.hi = pairs_lh + 1;
+  problem.vector_stride = 2;
   problem.findex = findex;
-  if (!state->solver.solve(problem, scratch.x.data(), scratch.lo_out.data(), scratch.hi_out.data(),
-                           w)) {
+  if (!state->solver.solve(problem, pairs_bx + 1, pairs_lh, pairs_lh + 1, w)) {
     ++state->fallbacks;
     libode_solve_lcp()(arena, n, a, pairs_bx, w, nub, pairs_lh, findex);
-    return;
-  }
-  for (unsigned i = 0; i < n; ++i) {
-    pairs_bx[2 * i + 1] = scratch.x[i];
-    pairs_lh[2 * i] = scratch.lo_out[i];
-    pairs_lh[2 * i + 1] = scratch.hi_out[i];
   }
 }

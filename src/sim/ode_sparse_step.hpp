@@ -6,8 +6,6 @@
 
 #include <ode/ode.h>
 
-#include <vector>
-
 #include "box_lcp.hpp"
 
 namespace motoflex::detail {
@@ -16,10 +14,6 @@ namespace motoflex::detail {
 struct SparseStepState {
   BoxLcpSolver solver;
   long fallbacks = 0;  // problems handed back to libode's solver (pivoting did not settle)
-  // The current problem with ODE's interleaved arrays split (no state across problems).
-  struct Scratch {
-    std::vector<double> b, lo, hi, x, lo_out, hi_out;
-  } scratch;
 };
 
 // One dWorldStep of `world` whose LCPs go to `state`'s solver (a problem it cannot settle goes
