@@ -26,6 +26,7 @@ import argparse
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -101,7 +102,7 @@ def quick_fit_config(tmp, solver):
     with open(os.path.join(fit_dir, "nao_base.yaml")) as f:
         scenario = f.read().replace("robot: ../robots/nao",
                                     f"robot: {os.path.join(ROOT, 'scenarios', 'robots', 'nao')}")
-    scenario = scenario.replace("solver: step", f"solver: {solver}")
+    scenario = re.sub(r"solver: \w+", f"solver: {solver}", scenario)
     with open(os.path.join(tmp, f"nao_base_{solver}.yaml"), "w") as f:
         f.write(scenario)
     with open(os.path.join(fit_dir, "nao_quick.yaml")) as f:
