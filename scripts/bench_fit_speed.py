@@ -3,7 +3,8 @@
 
 1. Physics steps/s per core of the Nao's full MoToFlex pipeline (100 gear sub-steps, 2 flexible
    sub-bodies per thigh and tibia), exact (dWorldStep with libode's LCP solver), sparse
-   (dWorldStep with motoflex's: the same LCP) and quick (dWorldQuickStep, seeded per rollout), `motoflex bench`, REPEATS interleaved runs, medians: one rollout on one thread, and
+   (dWorldStep with motoflex's: the same LCP) and quick (dWorldQuickStep, seeded per rollout),
+   `motoflex bench`, REPEATS interleaved runs, medians: one rollout on one thread, and
    THREADS rollouts on THREADS threads (per core: the total over THREADS).
 2. motoflex against MuJoCo 2.2.2 on the same exported Nao and motion (the Nao walking on the
    ground with the full servo, the validation walk, 1 ms steps), `motoflex export --check-mujoco`:

@@ -44,8 +44,7 @@ Scenario load(const std::string& path, const ScenarioArgs& args) {
   overrides.duration_s = args.duration_s;
   if (args.solver) {
     overrides.solver = parse_step_solver(*args.solver);
-    if (!overrides.solver)
-      throw InputError("", 0, "solver", "expected 'step', 'sparse' or 'quick'");
+    if (!overrides.solver) throw InputError("", 0, "solver", kStepSolverChoices);
   }
   return load_scenario_or_truth(path, overrides, args.recording);
 }

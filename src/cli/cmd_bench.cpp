@@ -47,7 +47,7 @@ int run(const BenchArgs& args) {
     throw InputError("", 0, "--rollouts/--threads", "must be >= 1");
   }
   const auto solver = parse_step_solver(args.solver);
-  if (!solver) throw InputError("", 0, "--solver", "expected 'step', 'sparse' or 'quick'");
+  if (!solver) throw InputError("", 0, "--solver", kStepSolverChoices);
   StructureOptions structure;
   structure.flex_sub_bodies = args.flex;
   structure.universal_joints = !args.no_universal;

@@ -53,8 +53,7 @@ int run(const SimulateArgs& args) {
   if (!args.motion.empty()) overrides.motion_log = args.motion;
   if (!args.solver.empty()) {
     overrides.solver = parse_step_solver(args.solver);
-    if (!overrides.solver)
-      throw InputError("", 0, "--solver", "expected 'step', 'sparse' or 'quick'");
+    if (!overrides.solver) throw InputError("", 0, "--solver", kStepSolverChoices);
   }
   if (args.duration_s > 0.0) overrides.duration_s = args.duration_s;
   const Scenario scenario = load_scenario_or_truth(args.scenario, overrides, args.recording);

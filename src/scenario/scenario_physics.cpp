@@ -18,7 +18,7 @@ void read_step_settings(const YamlValue& physics, RolloutOptions& rollout) {
   }
   if (const auto solver = physics.find("solver")) {
     const auto parsed = parse_step_solver(solver->as_string());
-    if (!parsed) solver->fail("expected 'step', 'sparse' or 'quick'");
+    if (!parsed) solver->fail(kStepSolverChoices);
     rollout.solver = *parsed;
   }
 }

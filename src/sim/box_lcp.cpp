@@ -91,13 +91,7 @@ bool BoxLcpSolver::solve(const BoxLcpView& problem, double* x_out, double* lo_ou
     }
   }
   if (w_out != nullptr) {
-    for (std::size_t p = 0; p < n; ++p) {
-      double ax = diagonal_[p] * x_[p];
-      for (std::size_t e = row_start_[p]; e < row_start_[p + 1]; ++e) {
-        ax += row_value_[e] * x_[row_column_[e]];
-      }
-      w_out[order_[p]] = ax - b_[p];
-    }
+    for (std::size_t p = 0; p < n; ++p) w_out[order_[p]] = a_row_times_x(p) - b_[p];
   }
   previous_state_ = state_;
   return true;
@@ -254,9 +248,10 @@ std::size_t BoxLcpSolver::read_values(const BoxLcpView& problem) {
       pattern_a_[e] = a(i, order_[pattern_[e]]);
     }
   }
-  l_.assign(pattern_.size(), 0.0);
-  ld_.assign(pattern_.size(), 0.0);
-  d_.assign(n, 0.0);
+  // Sized only: every factorisation of a problem starts at row 0 and writes each row it covers.
+  l_.resize(pattern_.size());
+  ld_.resize(pattern_.size());
+  d_.resize(n);
   return nonzeros;
 }
 
@@ -301,6 +296,14 @@ bool BoxLcpSolver::factor_free_rows() {
   }
   factored_rows_ = rows;
   return true;
+}
+
+double BoxLcpSolver::a_row_times_x(std::size_t p) const {
+  double ax = diagonal_[p] * x_[p];
+  for (std::size_t e = row_start_[p]; e < row_start_[p + 1]; ++e) {
+    ax += row_value_[e] * x_[row_column_[e]];
+  }
+  return ax;
 }
 
 // x_F = A_FF⁻¹ (b_F − A_F,rest x_rest) with the factorisation of factor_free_rows().
@@ -370,11 +373,7 @@ bool BoxLcpSolver::solve_phase(std::size_t rows) {
         continue;
       }
       if (is_fixed(lo_[p], hi_[p])) continue;
-      double ax = diagonal_[p] * x_[p];
-      for (std::size_t e = row_start_[p]; e < row_start_[p + 1]; ++e) {
-        ax += row_value_[e] * x_[row_column_[e]];
-      }
-      const double w = ax - b_[p];
+      const double w = a_row_times_x(p) - b_[p];
       if ((state_[p] == BoxRowState::kAtLower && w < -w_tolerance) ||
           (state_[p] == BoxRowState::kAtUpper && w > w_tolerance)) {
         violations_.push_back(p);

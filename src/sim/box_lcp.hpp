@@ -86,6 +86,7 @@ class BoxLcpSolver {
   bool factor_free_rows();
   void solve_free_rows();
   bool solve_phase(std::size_t rows);
+  double a_row_times_x(std::size_t p) const;  // (A·x)_p, by position
 
   Counts counts_;
   // Structure, by problem index: friction flags and the pattern of A (n × n bytes).

@@ -84,9 +84,12 @@ struct ScenarioOverrides {
 // the motion log or the parameter file.
 Scenario load_scenario(const std::string& path, const ScenarioOverrides& overrides = {});
 
+// "step", "sparse" or "quick"; nullopt for anything else, which a caller reports with
+// kStepSolverChoices.
 std::optional<StepSolver> parse_step_solver(const std::string& text);
+inline constexpr const char* kStepSolverChoices = "expected 'step', 'sparse' or 'quick'";
 
-// Reads a `physics:` section's `dt_s` (in (0, 0.01] s) and `solver` (step | quick) into
+// Reads a `physics:` section's `dt_s` (in (0, 0.01] s) and `solver` (step | sparse | quick) into
 // `rollout`, leaving what is absent; throws InputError naming the key otherwise. The caller
 // checks which other keys the section may have.
 void read_step_settings(const YamlValue& physics, RolloutOptions& rollout);
