@@ -1,4 +1,5 @@
 #include "motoflex/effects/effect_loop.hpp"
+#include "motoflex/effects/refit_candidates.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -25,7 +26,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kMinExplained = 1e-3;  // a signature that explains less is not refit
 constexpr const char* kDiscovered = "discovered_torque";
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -169,33 +169,6 @@ void rank_iteration(const Evaluated& current, const LoopOptions& options, std::s
   std::fflush(stdout);
 }
 
-// The ranking orders; the refit on validation logs decides. (ΔBIC over N_eff is a conservative
-// screen: on a smooth real residual it can leave no effect "supported".) Effects that passed the
-// validation test in the previous iteration but were not added (`retained`) are refit again on
-// top of the new model, whatever their rank now: once one effect is in, the linearised ranking
-// around the new fit can credit a second one with nothing (the first one's parameters re-tuned
-// take up its probe) although the two together fit better, as a current limit and
-// load-dependent friction do on the XL330 bench.
-std::vector<const EffectScore*> refit_candidates(const EffectRanking& ranking,
-                                                 const LoopOptions& options,
-                                                 const std::vector<std::string>& retained) {
-  std::vector<const EffectScore*> candidates;
-  for (const auto& score : ranking.scores) {
-    if (score.scored() && score.explained > kMinExplained &&
-        candidates.size() < options.candidates) {
-      candidates.push_back(&score);
-    }
-  }
-  for (const auto& score : ranking.scores) {
-    const bool listed = std::find(candidates.begin(), candidates.end(), &score) != candidates.end();
-    if (score.scored() && !listed &&
-        std::find(retained.begin(), retained.end(), score.effect) != retained.end()) {
-      candidates.push_back(&score);
-    }
-  }
-  return candidates;
-}
-
 // Refits the current model with one candidate effect and judges it on the validation logs.
 LoopRefit refit_with(const Evaluated& current, const RefitStart& candidate, const std::string& dir,
                      const LoopOptions& options, LoopResult& result,
@@ -294,17 +267,37 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
   rank_iteration(current, options, iteration, step, result);
   std::optional<std::size_t> winner;  // index into refits
   std::vector<Evaluated> refits;
-  const std::vector<const EffectScore*> candidates =
-      refit_candidates(step.ranking, options, retained);
-  refits.reserve(candidates.size());
-  for (const EffectScore* candidate : candidates) {
-    const std::string dir = iteration_dir(out, iteration, candidate->effect);
-    const RefitStart start{&find_effect(candidate->effect), candidate->estimate,
-                           candidate->fit_start};
-    step.refits.push_back(refit_with(current, start, dir, options, result, refits));
-    if (step.refits.back().significant &&
-        (!winner || refits.back().validation.bic < refits[*winner].validation.bic)) {
-      winner = refits.size() - 1;
+  // The ranking orders; the refit on validation logs decides. (ΔBIC over N_eff is a conservative
+  // screen: on a smooth real residual it can leave no effect "supported".) Effects that passed
+  // the validation test last time but were not added (`retained`) are refit again on top of the
+  // new model, whatever their rank now: the linearised ranking around the new fit can credit a
+  // second one with nothing (the first one's parameters re-tuned take up its probe) although
+  // the two together fit better, as a current limit and load-dependent friction do on the XL330.
+  std::vector<const EffectScore*> candidates =
+      refit_candidates(step.ranking, options.candidates, retained);
+  refits.reserve(candidates.size() + options.widen);
+  const auto refit_all = [&](const std::vector<const EffectScore*>& round) {
+    for (const EffectScore* candidate : round) {
+      const std::string dir = iteration_dir(out, iteration, candidate->effect);
+      const RefitStart start{&find_effect(candidate->effect), candidate->estimate,
+                             candidate->fit_start};
+      step.refits.push_back(refit_with(current, start, dir, options, result, refits));
+      if (step.refits.back().significant &&
+          (!winner || refits.back().validation.bic < refits[*winner].validation.bic)) {
+        winner = refits.size() - 1;
+      }
+    }
+  };
+  refit_all(candidates);
+  if (!winner && options.widen > 0) {
+    std::vector<std::string> tried;
+    for (const EffectScore* candidate : candidates) tried.push_back(candidate->effect);
+    const std::vector<const EffectScore*> next =
+        refit_candidates(step.ranking, options.widen, {}, tried);
+    if (!next.empty()) {
+      std::printf("loop: none of the first %zu passes; widening to the next %zu in rank\n",
+                  candidates.size(), next.size());
+      refit_all(next);
     }
   }
   std::vector<DiscoveredTerm> discovered;

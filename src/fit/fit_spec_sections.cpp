@@ -113,12 +113,15 @@ PolishSpec read_polish(const YamlValue& node) {
 }
 
 LoopOptions read_loop(const YamlValue& node) {
-  node.require_keys_within({"candidates", "max_iterations", "min_gain", "effects", "refit",
+  node.require_keys_within({"candidates", "widen", "max_iterations", "min_gain", "effects", "refit",
                             "discover_terms", "discover_always", "discover_screen"});
   LoopOptions loop;
   const int candidates = node.get_int("candidates", static_cast<int>(loop.candidates));
   if (candidates < 1) node.at("candidates").fail("must be >= 1");
   loop.candidates = static_cast<std::size_t>(candidates);
+  const int widen = node.get_int("widen", 0);
+  if (widen < 0) node.at("widen").fail("must be >= 0");
+  loop.widen = static_cast<std::size_t>(widen);
   const int iterations = node.get_int("max_iterations", static_cast<int>(loop.max_iterations));
   if (iterations < 0) node.at("max_iterations").fail("must be >= 0");
   loop.max_iterations = static_cast<std::size_t>(iterations);

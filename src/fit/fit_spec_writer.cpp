@@ -130,6 +130,7 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
   fit["budget"] = budget_json(spec.budget);
   if (!spec.polish.method.empty()) fit["polish"] = polish_to_json(spec.polish);
   fit["loop"] = {{"candidates", spec.loop.candidates},
+                 {"widen", spec.loop.widen},
                  {"max_iterations", spec.loop.max_iterations},
                  {"min_gain", spec.loop.min_gain},
                  {"effects", spec.loop.effects},

@@ -32,6 +32,7 @@ const std::vector<Effect>& effect_library() {
       detail::current_limit_effect(),
       detail::backdrive_friction_effect(),
       detail::mounting_offset_effect(),
+      detail::winding_heating_effect(),
   };
   return library;
 }

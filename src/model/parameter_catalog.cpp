@@ -82,6 +82,10 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   for (const auto& a : model.actuators) {
     add(joint_parameter(a, "mounting_offset", joint_units(a).position), 0.0, -0.1, 0.1);
   }
+  // Appended: the winding's Joule heating (the effect winding_heating; winding_heating.hpp):
+  // no heating at R_th = 0; C a small servo's winding, about a gram of copper.
+  add("motor.winding_k_per_w", 0.0, 0.0, 200.0);
+  add("motor.winding_heat_j_per_k", 0.5, 0.01, 20.0);
   return specs;
 }
 
@@ -119,6 +123,8 @@ const DomainRule kDomainRules[] = {
     // The bench law's driver limit has no "off" value (its neutral is 1e3 A); the firmware laws'
     // servo.<S>.current_limit_a takes 0 for none (the generic rule below).
     {"motor.current_limit_a", true, kPositive},
+    {"motor.winding_k_per_w", true, kNonNegative},
+    {"motor.winding_heat_j_per_k", true, kPositive},
     {"R_ohm", false, kPositive},
     {"L_h", false, kNonNegative},
     {"Kt_nm_per_a", false, kPositive},

@@ -117,7 +117,10 @@ struct PolishSpec {
 
 // What `motoflex loop` does with a fit (the `loop:` section; plain fits ignore it).
 struct LoopOptions {
-  std::size_t candidates = 3;      // top-ranked effects refit per iteration
+  std::size_t candidates = 3;  // top-ranked effects refit per iteration
+  // When none of those passes: refit up to this many more, next in rank, before discovered
+  // terms (refit_candidates.hpp); 0 = stop at the first round.
+  std::size_t widen = 0;
   std::size_t max_iterations = 3;  // effects added at most
   // A candidate is added only if it lowers the validation RMS (over the fitness's channels:
   // the joints, and the IMU when it is scored) by at least this fraction and its validation

@@ -45,5 +45,6 @@ Effect armature_effect();
 Effect current_limit_effect();
 Effect backdrive_friction_effect();
 Effect mounting_offset_effect();
+Effect winding_heating_effect();
 
 }  // namespace motoflex::detail

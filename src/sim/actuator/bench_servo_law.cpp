@@ -7,6 +7,7 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
+#include "motoflex/sim/actuator/winding_heating.hpp"
 
 namespace motoflex {
 namespace {
@@ -14,12 +15,13 @@ namespace {
 class BenchServoLaw final : public ServoLaw {
  public:
   BenchServoLaw(BenchServoParams params, FrictionParams friction, double drift_per_s,
-                bool logged_supply)
+                bool logged_supply, WindingTemperature winding)
       : params_(params),
         friction_(friction),
         resistance_drift_per_s_(drift_per_s),
         logged_supply_(logged_supply),
-        external_(friction_reads_external_torque(friction)) {}
+        external_(friction_reads_external_torque(friction)),
+        winding_(winding) {}
 
   ServoOutput step(const ServoInput& in) override {
     BenchServoParams bench = params_;
@@ -29,9 +31,12 @@ class BenchServoLaw final : public ServoLaw {
     if (logged_supply_ && std::isfinite(in.logged_supply_v)) bench.supply_v = in.logged_supply_v;
     // A released H-bridge (BAM lift_and_drop): no drive and no back-EMF braking.
     const bool enabled = in.elapsed_s - in.settle_s < bench.torque_off_s;
+    if (winding_.heats()) bench.resistance_ohm *= winding_.resistance_factor();
     ServoOutput out;
     out.torque_nm =
         bench_servo_torque_nm(bench, in.command_rad, in.angle_rad, in.rate_rad_s, enabled);
+    // The winding current I = τ/K_t (none through a released bridge).
+    winding_.advance(out.torque_nm / bench.torque_constant_nm_per_a, bench.resistance_ohm);
     out.row = joint_friction(friction_, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
     return out;
   }
@@ -45,6 +50,7 @@ class BenchServoLaw final : public ServoLaw {
   double resistance_drift_per_s_;
   bool logged_supply_;
   bool external_;
+  WindingTemperature winding_;  // this rollout's winding
 };
 
 const char* const kBenchNames[] = {
@@ -64,6 +70,8 @@ std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   }
   out.emplace_back("motor.R_drift_per_s");
   out.emplace_back("motor.current_limit_a");
+  out.emplace_back("motor.winding_k_per_w");
+  out.emplace_back("motor.winding_heat_j_per_k");
   return out;
 }
 
@@ -87,8 +95,10 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   if (logged_supply != 0.0 && logged_supply != 1.0) {
     throw ModelError("bench.logged_supply must be 0 (nominal bench.supply_v) or 1 (the log's)");
   }
+  const WindingTemperature winding(
+      {get("motor.winding_k_per_w"), get("motor.winding_heat_j_per_k")}, setup.dt_s);
   return std::make_unique<BenchServoLaw>(bench, friction, get("motor.R_drift_per_s"),
-                                         logged_supply == 1.0);
+                                         logged_supply == 1.0, winding);
 }
 
 // The XL330 bench (scenarios/robots/servo_pendulum).
