@@ -273,7 +273,7 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
   // new model, whatever their rank now: the linearised ranking around the new fit can credit a
   // second one with nothing (the first one's parameters re-tuned take up its probe) although
   // the two together fit better, as a current limit and load-dependent friction do on the XL330.
-  std::vector<const EffectScore*> candidates =
+  const std::vector<const EffectScore*> candidates =
       refit_candidates(step.ranking, options.candidates, retained);
   refits.reserve(candidates.size() + options.widen);
   const auto refit_all = [&](const std::vector<const EffectScore*>& round) {

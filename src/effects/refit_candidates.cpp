@@ -15,13 +15,11 @@ std::vector<const EffectScore*> refit_candidates(const EffectRanking& ranking, s
                                                  const std::vector<std::string>& retained,
                                                  const std::vector<std::string>& exclude) {
   std::vector<const EffectScore*> chosen;
-  std::size_t ranked = 0;
   for (const EffectScore& score : ranking.scores) {
-    if (ranked == count) break;
+    if (chosen.size() == count) break;
     if (score.scored() && score.explained > kMinRefitExplained &&
         !named_in(exclude, score.effect)) {
       chosen.push_back(&score);
-      ++ranked;
     }
   }
   for (const EffectScore& score : ranking.scores) {
