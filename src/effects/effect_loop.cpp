@@ -27,6 +27,14 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kDiscovered = "discovered_torque";
+constexpr const char* kControl = "control";
+
+// The control refit's "effect": the current model's own parameters, nothing added.
+const Effect& control_effect() {
+  static const Effect kEffect{kControl, "the current model refit alone (no effect added)",
+                              "none", {}, false, 0};
+  return kEffect;
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -113,7 +121,7 @@ std::string write_refit(const Evaluated& current, const RefitStart& candidate,
   }
   Estimate estimate = candidate.estimate;
   const std::size_t points = current.fit.config.loop.refit_scan;
-  if (points >= 3) {
+  if (points >= 3 && !effect.parameters.empty()) {
     // One config for the whole scan: the effect's parameters follow the fit's own in its space.
     const FitConfig probe = load_fit_config(
         write_refit_config(current.fit.config, fitted, effect, estimate, dir, start));
@@ -169,9 +177,21 @@ void rank_iteration(const Evaluated& current, const LoopOptions& options, std::s
   std::fflush(stdout);
 }
 
-// Refits the current model with one candidate effect and judges it on the validation logs.
+// The validation errors a refit must beat by the loop's tests: the current model's, or its
+// control refit's where that validates better (LoopOptions::control).
+struct ValidationBar {
+  double fit_error_rad = 0.0;
+  double bic = 0.0;
+};
+
+ValidationBar bar_of(const ErrorSummary& validation) {
+  return {validation.fit_error_rad, validation.bic};
+}
+
+// Refits the current model with one candidate effect and judges it on the validation logs
+// against `bar`.
 LoopRefit refit_with(const Evaluated& current, const RefitStart& candidate, const std::string& dir,
-                     const LoopOptions& options, LoopResult& result,
+                     const LoopOptions& options, const ValidationBar& bar, LoopResult& result,
                      std::vector<Evaluated>& refits) {
   const std::string yaml = write_refit(current, candidate, dir, &result.probe_rollouts);
   std::printf("loop: refit with %s -> %s\n", candidate.effect->name.c_str(), dir.c_str());
@@ -197,9 +217,8 @@ LoopRefit refit_with(const Evaluated& current, const RefitStart& candidate, cons
   // The gain is measured as the fit measures its error: on the joints (with their weights),
   // and on the IMU too when the fitness scores it.
   // (As the fit measures it: RMS for squared errors, mean absolute error for absolute ones.)
-  row.significant = refit.validation.fit_error_rad <=
-                        (1.0 - options.min_gain) * current.validation.fit_error_rad &&
-                    refit.validation.bic < current.validation.bic;
+  row.significant = refit.validation.fit_error_rad <= (1.0 - options.min_gain) * bar.fit_error_rad &&
+                    refit.validation.bic < bar.bic;
   std::printf("loop:   %s: validation RMS %.4g -> %.4g deg, MAE %.4g -> %.4g mrad (%s)\n",
               row.effect.c_str(), current.validation.rms_deg, row.val_rms_deg,
               1e3 * current.validation.mae_rad, 1e3 * row.val_mae_rad,
@@ -220,8 +239,8 @@ void record_errors_after(const Evaluated& model, LoopIteration& step) {
 // them (their refit is step.refits.back()). Returns the terms (empty: none supported, no refit).
 std::vector<DiscoveredTerm> discover_and_refit(std::size_t iteration, const fs::path& out,
                                                const LoopOptions& options, const Evaluated& current,
-                                               LoopIteration& step, LoopResult& result,
-                                               std::vector<Evaluated>& refits) {
+                                               const ValidationBar& bar, LoopIteration& step,
+                                               LoopResult& result, std::vector<Evaluated>& refits) {
   const auto start = std::chrono::steady_clock::now();
   // Its probe rollouts (one set of the training logs per free parameter and per candidate term)
   // take minutes on a walking robot: say it has started.
@@ -249,24 +268,36 @@ std::vector<DiscoveredTerm> discover_and_refit(std::size_t iteration, const fs::
   const Effect effect = discovered_effect(discovery.terms);
   const RefitStart refit{&effect, discovery.estimate, discovery.fit_start};
   step.refits.push_back(refit_with(current, refit, iteration_dir(out, iteration, kDiscovered),
-                                   options, result, refits));
+                                   options, bar, result, refits));
   return discovery.terms;
 }
 
-// One iteration: rank, refit the top candidates, keep the best significant one. Returns false
-// when nothing was added (the loop stops).
-bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions& options,
-                   Evaluated& current, std::vector<std::string>& model,
-                   std::vector<std::string>& retained, LoopResult& result) {
-  LoopIteration step;
-  step.model_run_dir = current.fit.config.out_dir;
-  step.train_rms_before_deg = current.train.rms_deg;
-  step.val_rms_before_deg = current.validation.rms_deg;
-  step.val_mae_before_rad = current.validation.mae_rad;
-  step.val_imu_rms_before_deg = imu_rms_deg(current.validation);
-  rank_iteration(current, options, iteration, step, result);
-  std::optional<std::size_t> winner;  // index into refits
-  std::vector<Evaluated> refits;
+// The control refit of an iteration (LoopOptions::control): the current model refit alone,
+// judged against the current model. Returns the bar the effects must then beat: the better of
+// the two validations.
+ValidationBar refit_control(std::size_t iteration, const fs::path& out, const LoopOptions& options,
+                            const Evaluated& current, LoopIteration& step, LoopResult& result,
+                            std::vector<Evaluated>& refits) {
+  ValidationBar bar = bar_of(current.validation);
+  if (!options.control) return bar;
+  const RefitStart start{&control_effect(), {}, {}};
+  step.refits.push_back(refit_with(current, start, iteration_dir(out, iteration, kControl),
+                                   options, bar, result, refits));
+  const ErrorSummary& control = refits.back().validation;
+  bar.fit_error_rad = std::min(bar.fit_error_rad, control.fit_error_rad);
+  bar.bic = std::min(bar.bic, control.bic);
+  return bar;
+}
+
+// Refits the ranked candidates (and, when none passes, the next `widen` in rank), each judged
+// against `bar`; returns the index into `refits` of the best significant one (lowest validation
+// BIC), if any.
+std::optional<std::size_t> refit_ranked(std::size_t iteration, const fs::path& out,
+                                        const LoopOptions& options, const Evaluated& current,
+                                        const std::vector<std::string>& retained,
+                                        const ValidationBar& bar, LoopIteration& step,
+                                        LoopResult& result, std::vector<Evaluated>& refits) {
+  std::optional<std::size_t> winner;
   // The ranking orders; the refit on validation logs decides. (ΔBIC over N_eff is a conservative
   // screen: on a smooth real residual it can leave no effect "supported".) Effects that passed
   // the validation test last time but were not added (`retained`) are refit again on top of the
@@ -275,13 +306,12 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
   // the two together fit better, as a current limit and load-dependent friction do on the XL330.
   const std::vector<const EffectScore*> candidates =
       refit_candidates(step.ranking, options.candidates, retained);
-  refits.reserve(candidates.size() + options.widen);
   const auto refit_all = [&](const std::vector<const EffectScore*>& round) {
     for (const EffectScore* candidate : round) {
       const std::string dir = iteration_dir(out, iteration, candidate->effect);
       const RefitStart start{&find_effect(candidate->effect), candidate->estimate,
                              candidate->fit_start};
-      step.refits.push_back(refit_with(current, start, dir, options, result, refits));
+      step.refits.push_back(refit_with(current, start, dir, options, bar, result, refits));
       if (step.refits.back().significant &&
           (!winner || refits.back().validation.bic < refits[*winner].validation.bic)) {
         winner = refits.size() - 1;
@@ -300,13 +330,40 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
       refit_all(next);
     }
   }
+  return winner;
+}
+
+// One iteration: rank, refit the current model alone (the control) and with each top candidate,
+// keep the best significant effect, or else the control when it passed. Returns false when the
+// model did not change (the loop stops).
+bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions& options,
+                   Evaluated& current, std::vector<std::string>& model,
+                   std::vector<std::string>& retained, LoopResult& result) {
+  LoopIteration step;
+  step.model_run_dir = current.fit.config.out_dir;
+  step.train_rms_before_deg = current.train.rms_deg;
+  step.val_rms_before_deg = current.validation.rms_deg;
+  step.val_mae_before_rad = current.validation.mae_rad;
+  step.val_imu_rms_before_deg = imu_rms_deg(current.validation);
+  rank_iteration(current, options, iteration, step, result);
+  std::vector<Evaluated> refits;
+  const ValidationBar bar =
+      refit_control(iteration, out, options, current, step, result, refits);
+  const std::optional<std::size_t> control =
+      options.control ? std::optional<std::size_t>(0) : std::nullopt;
+  std::optional<std::size_t> winner =
+      refit_ranked(iteration, out, options, current, retained, bar, step, result, refits);
   std::vector<DiscoveredTerm> discovered;
   if ((!winner || options.discover_always) && options.discover_terms > 0) {
-    discovered = discover_and_refit(iteration, out, options, current, step, result, refits);
+    discovered = discover_and_refit(iteration, out, options, current, bar, step, result, refits);
     if (!discovered.empty() && step.refits.back().significant &&
         (!winner || refits.back().validation.bic < refits[*winner].validation.bic)) {
       winner = refits.size() - 1;
     }
+  }
+  if (!winner && control && step.refits[*control].significant) {
+    winner = control;
+    step.reoptimised = true;
   }
   if (!winner) {
     record_errors_after(current, step);
@@ -314,21 +371,27 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
     std::printf("loop: no candidate improves the validation error significantly; stop\n");
     return false;
   }
-  step.added_effect = step.refits[*winner].effect;
-  model.push_back(step.added_effect);
   retained.clear();
   for (const LoopRefit& refit : step.refits) {
-    if (refit.significant && refit.effect != step.added_effect && refit.effect != kDiscovered) {
+    if (refit.significant && refit.effect != step.refits[*winner].effect &&
+        refit.effect != kDiscovered && refit.effect != kControl) {
       retained.push_back(refit.effect);
     }
   }
   Evaluated& best = refits[*winner];
   record_errors_after(best, step);
-  if (step.added_effect == kDiscovered) {
-    step.discovered_formula = discovered_formula(discovered, best.fit.best);
-    std::printf("loop: discovered %s\n", step.discovered_formula.c_str());
+  if (step.reoptimised) {
+    std::printf("loop: no effect beats the current model refit alone, which validates better: "
+                "going on from it (re-optimised)\n");
+  } else {
+    step.added_effect = step.refits[*winner].effect;
+    model.push_back(step.added_effect);
+    if (step.added_effect == kDiscovered) {
+      step.discovered_formula = discovered_formula(discovered, best.fit.best);
+      std::printf("loop: discovered %s\n", step.discovered_formula.c_str());
+    }
+    std::printf("loop: added %s\n", step.added_effect.c_str());
   }
-  std::printf("loop: added %s\n", step.added_effect.c_str());
   result.iterations.push_back(std::move(step));
   best.fit.config.loop = options;
   current = std::move(best);

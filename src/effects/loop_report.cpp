@@ -145,6 +145,7 @@ nlohmann::ordered_json iteration_json(const LoopIteration& it) {
   item["ranking_detail"] = ranking_json(it.ranking);
   item["added_effect"] = it.added_effect.empty() ? nlohmann::ordered_json(nullptr)
                                                  : nlohmann::ordered_json(it.added_effect);
+  item["reoptimised"] = it.reoptimised;
   if (!it.discovery_proposal.empty()) {
     item["discovery"] = {{"proposal", it.discovery_proposal},
                          {"explained", it.discovery_explained},
@@ -221,11 +222,18 @@ void write_loop_summary(std::ostringstream& md, const LoopResult& result, const 
     any = true;
   }
   md << (any ? "" : "nothing") << ".\n\n";
+  if (user.loop.control) {
+    md << "Each iteration also refits the current model alone (`control`); an effect must beat "
+          "the better of the two, and an iteration marked re-optimised went on from the control "
+          "because no effect did.\n\n";
+  }
   md << "| iteration | added | train RMS before → after (deg) | validation RMS before → after "
         "(deg) | validation MAE before → after (mrad) |\n|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < result.iterations.size(); ++i) {
     const LoopIteration& it = result.iterations[i];
-    md << "| " << i + 1 << " | " << (it.added_effect.empty() ? "–" : it.added_effect) << " | "
+    const std::string added =
+        !it.added_effect.empty() ? it.added_effect : (it.reoptimised ? "– (re-optimised)" : "–");
+    md << "| " << i + 1 << " | " << added << " | "
        << format("%.4f", it.train_rms_before_deg) << " → " << format("%.4f", it.train_rms_after_deg)
        << " | " << format("%.4f", it.val_rms_before_deg) << " → "
        << format("%.4f", it.val_rms_after_deg) << " ("

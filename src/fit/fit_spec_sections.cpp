@@ -114,7 +114,7 @@ PolishSpec read_polish(const YamlValue& node) {
 
 LoopOptions read_loop(const YamlValue& node) {
   node.require_keys_within({"candidates", "widen", "max_iterations", "min_gain", "effects", "refit",
-                            "discover_terms", "discover_always", "discover_screen"});
+                            "discover_terms", "discover_always", "discover_screen", "control"});
   LoopOptions loop;
   const int candidates = node.get_int("candidates", static_cast<int>(loop.candidates));
   if (candidates < 1) node.at("candidates").fail("must be >= 1");
@@ -133,6 +133,7 @@ LoopOptions read_loop(const YamlValue& node) {
   if (discover < 0) node.at("discover_terms").fail("must be >= 0");
   loop.discover_terms = static_cast<std::size_t>(discover);
   loop.discover_always = node.get_bool("discover_always", false);
+  loop.control = node.get_bool("control", loop.control);
   const int screen = node.get_int("discover_screen", 0);
   if (screen < 0) node.at("discover_screen").fail("must be >= 0");
   loop.discover_screen = static_cast<std::size_t>(screen);

@@ -137,6 +137,7 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
                  {"discover_terms", spec.loop.discover_terms},
                  {"discover_always", spec.loop.discover_always},
                  {"discover_screen", spec.loop.discover_screen},
+                 {"control", spec.loop.control},
                  {"refit",
                   {{"strategy", strategy_to_json(spec.loop.refit_strategy)},
                    {"budget", budget_json(spec.loop.refit_budget)}}}};

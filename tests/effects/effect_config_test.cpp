@@ -196,5 +196,24 @@ TEST(EffectConfig, RefitScanIsReadAndChecked) {
   }
 }
 
+// `loop: {control: ...}`: on unless switched off, kept when the spec is written back (the loop's
+// identity hashes it), and a value that is not a boolean rejected naming the field.
+TEST(EffectConfig, ControlRefitIsOnByDefaultAndRead) {
+  const auto dir = fresh_dir("effect_config_control");
+  const FitConfig on = load_fit_config(write_hidden_bench_fit(dir / "on", "none", "{}"));
+  const FitConfig off =
+      load_fit_config(write_hidden_bench_fit(dir / "off", "none", "{control: false}"));
+  EXPECT_TRUE(on.loop.control);
+  EXPECT_FALSE(off.loop.control);
+  EXPECT_EQ(fit_spec_to_json(off)["loop"]["control"], false);
+  EXPECT_EQ(fit_spec_to_json(on)["loop"]["control"], true);
+  try {
+    load_fit_config(write_hidden_bench_fit(dir / "bad", "none", "{control: 3}"));
+    FAIL() << "control: 3 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("control"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace motoflex::testing

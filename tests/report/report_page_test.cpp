@@ -163,7 +163,9 @@ TEST(RenderReport, ALoopDirShowsBeforeAndAfter) {
   write_text(dir / "loop.json", R"({"fit": "/x/bench_hidden.yaml",
     "iterations": [{"added_effect": "stribeck",
     "train_rms_before": 0.2, "train_rms_after": 0.1, "val_rms_before": 0.1553,
-    "val_rms_after": 0.0605}], "final_run_dir": ")" +
+    "val_rms_after": 0.0605}, {"added_effect": null, "reoptimised": true,
+    "train_rms_before": 0.1, "train_rms_after": 0.09, "val_rms_before": 0.0605,
+    "val_rms_after": 0.0550}], "final_run_dir": ")" +
                                     (dir / "01_stribeck").string() + R"("})");
   write_text(dir / "report.md", "# Closing the loop: toy\n\nFinal model adds: stribeck.\n");
   const std::string html = render_report(read_run_dir(dir.string()));
@@ -171,6 +173,8 @@ TEST(RenderReport, ALoopDirShowsBeforeAndAfter) {
   EXPECT_NE(html.find("id=\"loop\""), std::string::npos);
   EXPECT_NE(html.find("0.1553 → 0.0605"), std::string::npos);
   EXPECT_NE(html.find("-61 %"), std::string::npos);
+  // The second iteration added nothing but went on from the control refit.
+  EXPECT_NE(html.find("<td>2</td><td>– (re-optimised)</td>"), std::string::npos);
   EXPECT_NE(html.find("Final model adds: stribeck."), std::string::npos);
   EXPECT_NE(html.find("the loop&#39;s final model"), std::string::npos);
 }

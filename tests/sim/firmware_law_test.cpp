@@ -20,6 +20,8 @@ namespace {
 using testing::OneJointRobot;
 
 constexpr double kDt_s = 1e-3;
+// Copper's temperature coefficient (winding_heating.hpp's kCopperResistancePerK), written out.
+constexpr double kCopperResistancePerKForTest = 0.00393;
 // A heavy arm: the no-load speed is reached slowly enough to stay within ODE's ±π hinge angle.
 // The arm's CoM on the axis (see pd_torque_law_test.cpp).
 const OneJointRobot kTurntable{
@@ -87,6 +89,49 @@ TEST(FirmwareLawTest, CurrentLimitCapsTheStallTorque) {
   p.set("servo.hinge.current_limit_a", 0.8);
   const auto trace = far_goal("dynamixel", p, 0.01);
   EXPECT_NEAR(trace.torque_nm.front(), 0.6 * 0.8, 1e-12);  // K_t·I_max (unlimited: 1.71 N·m)
+}
+
+// The winding's Joule heating (winding_heating.hpp) in the firmware laws: a stalled servo at a
+// held duty d heats its winding until ΔT·(1 + α·ΔT) = (U·d)²·R_th/R₀, and its torque falls to
+// N·K_t·U·d/(R₀·(1 + α·ΔT)). The arm is a flywheel (1e5 kg·m²) so that it stays still: its
+// back-EMF reaches 1.1e-5 of the drive after 8 s. With R_th = 0 the stall torque is the cold one.
+TEST(FirmwareLawTest, WindingHeatingWeakensAStalledServoToTheHotStallTorque) {
+  const OneJointRobot flywheel{
+      .mass_kg = 2.0, .length_m = 0.0, .com_inertia_kg_m2 = 1.0e5, .vertical_axis = true};
+  for (const char* law : {"dynamixel", "feetech"}) {
+    const RobotModel model =
+        testing::make_one_joint_robot(std::string("firmware_heating_") + law, flywheel, law);
+    ParameterSet p(model.parameters);
+    const Motor m;
+    p.set("servo.hinge.Kt_nm_per_a", m.kt);
+    p.set("servo.hinge.R_ohm", m.r);
+    p.set("servo.hinge.supply_v", m.v);
+    const double full_scale = p.get("servo.hinge.pwm_full_scale");
+    p.set("servo.hinge.pwm_limit", 0.8 * full_scale);
+    const double drive_v = m.v * 0.8;
+    const double cold_nm = m.kt * drive_v / m.r;
+    const auto stall = [&](const ParameterSet& values) {
+      return testing::run_steps(
+          model, values, law, -2.5, [](double) { return 2.5; }, 8.0, kDt_s);
+    };
+    const auto cold = stall(p);
+    EXPECT_NEAR(cold.torque_nm.front(), cold_nm, 1e-12) << law;
+    EXPECT_NEAR(cold.torque_nm.back(), cold_nm, 3e-5 * cold_nm) << law;
+    const double r_th_k_per_w = 20.0;  // τ = R_th·C = 1 s: settled to e^-8 after 8 s
+    p.set("motor.winding_k_per_w", r_th_k_per_w);
+    p.set("motor.winding_heat_j_per_k", 0.05);
+    const auto hot = stall(p);
+    EXPECT_NEAR(hot.torque_nm.front(), cold_nm, 1e-12) << law;  // starts cold
+    const double a = kCopperResistancePerKForTest;
+    const double c = drive_v * drive_v * r_th_k_per_w / m.r;  // ΔT + a·ΔT² = c
+    const double rise_k = (-1.0 + std::sqrt(1.0 + 4.0 * a * c)) / (2.0 * a);
+    const double hot_nm = cold_nm / (1.0 + a * rise_k);
+    std::printf("[ firmware ] %-9s stall %.4f N·m cold, %.4f hot (winding +%.1f K), closed form "
+                "%.4f\n",
+                law, cold_nm, hot.torque_nm.back(), rise_k, hot_nm);
+    EXPECT_NEAR(hot.torque_nm.back(), hot_nm, 1e-3 * hot_nm) << law;
+    EXPECT_LT(hot.torque_nm.back(), 0.8 * cold_nm) << law;  // +150 K: a third weaker
+  }
 }
 
 TEST(FirmwareLawTest, DeadBandAndIntegerTicksHoldTheArm) {

@@ -39,6 +39,9 @@ struct LoopIteration {
   EffectRanking ranking;
   std::vector<LoopRefit> refits;
   std::string added_effect;  // empty: nothing helped; "discovered_torque": discovered terms
+  // No effect was added, but the control refit (the current model refit alone, refits row
+  // "control") passed the validation tests: the loop went on from it (LoopOptions::control).
+  bool reoptimised = false;
   // When no library effect helped and discovery ran: what it proposed (formula with the
   // linearised estimates), its score, and the refit's formula when it was added.
   std::string discovery_proposal;
@@ -70,7 +73,9 @@ struct LoopResult {
 // Runs the loop of the fit config at `fit_path` (with its `loop:` options) into its out dir and
 // writes loop.json and report.md (with PNG plots) there. Throws InputError when the config has
 // no validation logs (the loop decides on them), and when the base fit did not converge unless
-// `force` (then every ranking is marked unreliable; see convergence_guard.hpp).
+// `force` (then every ranking is marked unreliable; see convergence_guard.hpp). With
+// `loop.control` every iteration also refits the current model alone, and an effect must beat
+// that control too (see LoopOptions::control).
 LoopResult run_loop(const std::string& fit_path, const FitOverrides& overrides, bool force = false);
 
 }  // namespace motoflex

@@ -149,6 +149,14 @@ struct LoopOptions {
   // effect at all (a current limit far above any current) gives its signature a zero slope, and
   // the linearised start barely moves it; the scan finds where it starts to act.
   std::size_t refit_scan = 0;
+  // Refit the current model alone in each iteration too (the control, `NN_control`), with the
+  // same start, strategy, budget and polish as an effect's refit. A refit can find a better
+  // optimum of the parameters the model already has; without the control that gain is credited
+  // to whichever effect was being refit (a current limit fitted far above any current, a
+  // Stribeck term fitted to zero). With it an effect must beat the better of the current model
+  // and the control, and when no effect does but the control itself passes the validation tests,
+  // the loop goes on from the control ("re-optimised", no effect added).
+  bool control = true;
   LoopOptions() {
     refit_strategy.kind = "cma_es";
     refit_strategy.sigma = 0.1;

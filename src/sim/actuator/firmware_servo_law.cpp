@@ -8,6 +8,7 @@
 #include "motoflex/sim/actuator/h_bridge_motor.hpp"
 #include "motoflex/sim/actuator/position_firmware.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
+#include "motoflex/sim/actuator/winding_heating.hpp"
 
 namespace motoflex::detail {
 namespace {
@@ -36,6 +37,7 @@ struct FirmwareServoParams {
   double torque_off_s = 1.0e9;  // log time from which the H-bridge is released
   FrictionParams friction;
   double armature_kg_m2 = 0.0;
+  WindingHeatingParams winding;  // motor.winding_*: off at R_th = 0
 };
 
 class FirmwareServoLaw final : public ServoLaw {
@@ -46,26 +48,35 @@ class FirmwareServoLaw final : public ServoLaw {
         external_(friction_reads_external_torque(p.friction)),
         back_emf_damping_nm_s_per_rad_(p.motor.gear_ratio * p.motor.gear_ratio *
                                        p.motor.torque_constant_nm_per_a *
-                                       p.motor.torque_constant_nm_per_a / p.motor.resistance_ohm) {}
+                                       p.motor.torque_constant_nm_per_a / p.motor.resistance_ohm),
+        winding_(p.winding, dt_s) {}
 
   ServoOutput step(const ServoInput& in) override {
     ServoOutput out;
     // A released H-bridge (BAM's torque_enable false) leaves the windings open: no drive, no
     // back-EMF braking (bam.md §2b); the firmware loop does not run.
+    // The winding's resistance at its present temperature (winding_heating.hpp; exactly R₀
+    // without heating), which then heats by this step's current.
+    HBridgeMotorParams hot = params_.motor;
+    if (winding_.heats()) hot.resistance_ohm *= winding_.resistance_factor();
     if (in.elapsed_s - in.settle_s < params_.torque_off_s) {
       const double duty = firmware_.update(in.command_rad, in.angle_rad);
-      const HBridgeMotorOutput motor = h_bridge_motor(params_.motor, duty, in.rate_rad_s);
+      const HBridgeMotorOutput motor = h_bridge_motor(hot, duty, in.rate_rad_s);
       out.torque_nm = motor.torque_nm;
       current_a_ = motor.current_a;
     } else {
       out.torque_nm = 0.0;
       current_a_ = 0.0;
     }
+    winding_.advance(current_a_, hot.resistance_ohm);
     out.row = joint_friction(params_.friction, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
     // The back-EMF term −N²K_t²/R·θ̇ of the motor torque acts through the implicit damping row at
     // the end-of-step rate: explicitly it diverges on a light link (c·h/I > 2: c = 0.4 N·m·s/rad,
     // h = 1 ms, I < 2e-4 kg·m², a small arm's wrist). Inside a current limit or with the
     // H-bridge released the offset cancels the row, as the physics wants (no back-EMF torque).
+    // The row keeps the cold winding's c₀ = N²K_t²/R₀. A heated winding's torque carries the
+    // smaller back-EMF term −c·θ̇₀, c = N²K_t²/R; with the offset +c₀·θ̇₀ the step applies
+    // −c₀·θ̇₁ + (c₀ − c)·θ̇₀: the net damping is the hot one, and the implicit row dominates.
     out.damping_offset_nm = back_emf_damping_nm_s_per_rad_ * in.rate_rad_s;
     return out;
   }
@@ -78,16 +89,22 @@ class FirmwareServoLaw final : public ServoLaw {
   FirmwareServoParams params_;
   PositionFirmware firmware_;
   bool external_;
-  double back_emf_damping_nm_s_per_rad_;  // N²·K_t²/R
+  double back_emf_damping_nm_s_per_rad_;  // N²·K_t²/R₀ (the cold winding)
   double current_a_ = 0.0;
+  WindingTemperature winding_;  // this rollout's winding
 };
 
 }  // namespace
 
 std::vector<std::string> firmware_law_parameter_names(const RobotModel& model,
                                                       std::size_t actuator) {
-  return scoped_law_parameter_names(model.actuators[actuator],
-                                    {std::begin(kLeaves), std::end(kLeaves)});
+  std::vector<std::string> names = scoped_law_parameter_names(
+      model.actuators[actuator], {std::begin(kLeaves), std::end(kLeaves)});
+  // The winding's Joule heating (the effect winding_heating), shared by the robot's servos of
+  // this law as the bench law reads it.
+  names.emplace_back("motor.winding_k_per_w");
+  names.emplace_back("motor.winding_heat_j_per_k");
+  return names;
 }
 
 std::unique_ptr<ServoLaw> create_firmware_law(const ServoLawSetup& setup) {
@@ -118,6 +135,7 @@ std::unique_ptr<ServoLaw> create_firmware_law(const ServoLawSetup& setup) {
   }
   p.friction = read_friction(setup.get, spec.name, FrictionTerms::kFamily);
   p.armature_kg_m2 = read_armature(setup.get, spec);
+  p.winding = {setup.get("motor.winding_k_per_w"), setup.get("motor.winding_heat_j_per_k")};
   try {
     return std::make_unique<FirmwareServoLaw>(p, setup.dt_s);
   } catch (const std::invalid_argument& error) {
