@@ -9,9 +9,11 @@
 #include <optional>
 #include <set>
 
+#include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/core/folder_lock.hpp"
 #include "motoflex/effects/convergence_guard.hpp"
+#include "motoflex/effects/inert_effect.hpp"
 #include "motoflex/effects/loop_identity.hpp"
 #include "motoflex/effects/loop_report.hpp"
 #include "motoflex/effects/refit_start_scan.hpp"
@@ -31,8 +33,8 @@ constexpr const char* kControl = "control";
 
 // The control refit's "effect": the current model's own parameters, nothing added.
 const Effect& control_effect() {
-  static const Effect kEffect{kControl, "the current model refit alone (no effect added)",
-                              "none", {}, false, 0};
+  static const Effect kEffect{
+      kControl, "the current model refit alone (no effect added)", "none", {}, false, 0};
   return kEffect;
 }
 
@@ -188,8 +190,25 @@ ValidationBar bar_of(const ErrorSummary& validation) {
   return {validation.fit_error_rad, validation.bic};
 }
 
+// Whether the refit's effect does nothing at its optimum (inert_effect.hpp); counts the rollouts.
+bool effect_inert(const Evaluated& current, const Effect& effect, const Evaluated& refit,
+                  LoopResult& result) {
+  if (effect.parameters.empty()) return false;
+  result.probe_rollouts += 2 * refit.fit.config.train->cases().size();
+  return effect_is_inert(*refit.fit.config.train, *refit.fit.config.space,
+                         current.fit.config.free_parameters.size(), refit.fit.best,
+                         current.fit.best);
+}
+
+// Whether `validation` passes the loop's gain and BIC tests against `bar`.
+bool passes(const ErrorSummary& validation, const ValidationBar& bar, const LoopOptions& options) {
+  return validation.fit_error_rad <= (1.0 - options.min_gain) * bar.fit_error_rad &&
+         validation.bic < bar.bic;
+}
+
 // Refits the current model with one candidate effect and judges it on the validation logs
-// against `bar`.
+// against `bar` (and, for a control or an inert effect, as a re-optimisation against the
+// current model).
 LoopRefit refit_with(const Evaluated& current, const RefitStart& candidate, const std::string& dir,
                      const LoopOptions& options, const ValidationBar& bar, LoopResult& result,
                      std::vector<Evaluated>& refits) {
@@ -217,12 +236,17 @@ LoopRefit refit_with(const Evaluated& current, const RefitStart& candidate, cons
   // The gain is measured as the fit measures its error: on the joints (with their weights),
   // and on the IMU too when the fitness scores it.
   // (As the fit measures it: RMS for squared errors, mean absolute error for absolute ones.)
-  row.significant = refit.validation.fit_error_rad <= (1.0 - options.min_gain) * bar.fit_error_rad &&
-                    refit.validation.bic < bar.bic;
+  const bool control = candidate.effect->parameters.empty();
+  row.inert = effect_inert(current, *candidate.effect, refit, result);
+  row.significant = !control && !row.inert && passes(refit.validation, bar, options);
+  row.reoptimises =
+      (control || row.inert) && passes(refit.validation, bar_of(current.validation), options);
+  std::string verdict = row.significant ? "significant" : "not significant";
+  if (row.inert) verdict = "inert: the effect does nothing at the refit's optimum";
+  if (row.reoptimises) verdict += control ? "; re-optimises" : ", but it re-optimises";
   std::printf("loop:   %s: validation RMS %.4g -> %.4g deg, MAE %.4g -> %.4g mrad (%s)\n",
               row.effect.c_str(), current.validation.rms_deg, row.val_rms_deg,
-              1e3 * current.validation.mae_rad, 1e3 * row.val_mae_rad,
-              row.significant ? "significant" : "not significant");
+              1e3 * current.validation.mae_rad, 1e3 * row.val_mae_rad, verdict.c_str());
   std::fflush(stdout);
   return row;
 }
@@ -272,6 +296,32 @@ std::vector<DiscoveredTerm> discover_and_refit(std::size_t iteration, const fs::
   return discovery.terms;
 }
 
+// The current model, nothing added, at `source`'s values of its own parameters, as a fit of its
+// own in `dir` (those values are its incumbent; one evaluation, no search, no polish): how the
+// loop goes on from an inert effect's refit without the effect (its parameters did nothing).
+Evaluated reoptimised_fit(const Evaluated& current, const Evaluated& source, const std::string& dir,
+                          const LoopOptions& options, LoopResult& result) {
+  const fs::path yaml = fs::path(dir) / "fit.yaml";
+  if (!fs::exists(yaml)) {
+    const FitSpec spec = evaluation_spec(current.fit.config, source.fit.best_json["free"], dir);
+    fs::create_directories(dir);
+    write_file_atomically(yaml.string(),
+                          "# Written by `motoflex loop`: " + current.fit.config.name +
+                              " at the values of an inert effect's refit "
+                              "(JSON is valid YAML)\n" +
+                              fit_spec_to_json(spec).dump(2) + "\n");
+  }
+  std::printf("loop: re-optimised model -> %s\n", dir.c_str());
+  std::fflush(stdout);
+  FitConfig config = load_fit_config(yaml.string());
+  config.loop = options;
+  config.threads = current.fit.config.threads;
+  Evaluated out = evaluate(ensure_fit(config));
+  out.fit.config.threads = config.threads;
+  account(result, out.fit);
+  return out;
+}
+
 // The control refit of an iteration (LoopOptions::control): the current model refit alone,
 // judged against the current model. Returns the bar the effects must then beat: the better of
 // the two validations.
@@ -281,8 +331,8 @@ ValidationBar refit_control(std::size_t iteration, const fs::path& out, const Lo
   ValidationBar bar = bar_of(current.validation);
   if (!options.control) return bar;
   const RefitStart start{&control_effect(), {}, {}};
-  step.refits.push_back(refit_with(current, start, iteration_dir(out, iteration, kControl),
-                                   options, bar, result, refits));
+  step.refits.push_back(refit_with(current, start, iteration_dir(out, iteration, kControl), options,
+                                   bar, result, refits));
   const ErrorSummary& control = refits.back().validation;
   bar.fit_error_rad = std::min(bar.fit_error_rad, control.fit_error_rad);
   bar.bic = std::min(bar.bic, control.bic);
@@ -333,8 +383,31 @@ std::optional<std::size_t> refit_ranked(std::size_t iteration, const fs::path& o
   return winner;
 }
 
+// No effect was credited: the best re-optimisation of the current model that passed the tests
+// (the control, or an inert effect's refit carried over without the effect), by validation BIC;
+// its index into `refits`, if any.
+std::optional<std::size_t> reoptimise(std::size_t iteration, const fs::path& out,
+                                      const LoopOptions& options, const Evaluated& current,
+                                      LoopIteration& step, LoopResult& result,
+                                      std::vector<Evaluated>& refits) {
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < step.refits.size(); ++i) {
+    if (step.refits[i].reoptimises &&
+        (!best || refits[i].validation.bic < refits[*best].validation.bic)) {
+      best = i;
+    }
+  }
+  if (!best) return std::nullopt;
+  step.reoptimised = true;
+  step.reoptimised_from = step.refits[*best].effect;
+  if (step.reoptimised_from == kControl) return best;
+  refits.push_back(reoptimised_fit(current, refits[*best],
+                                   iteration_dir(out, iteration, "reoptimised"), options, result));
+  return refits.size() - 1;
+}
+
 // One iteration: rank, refit the current model alone (the control) and with each top candidate,
-// keep the best significant effect, or else the control when it passed. Returns false when the
+// keep the best significant effect, or else the best re-optimisation. Returns false when the
 // model did not change (the loop stops).
 bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions& options,
                    Evaluated& current, std::vector<std::string>& model,
@@ -347,10 +420,7 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
   step.val_imu_rms_before_deg = imu_rms_deg(current.validation);
   rank_iteration(current, options, iteration, step, result);
   std::vector<Evaluated> refits;
-  const ValidationBar bar =
-      refit_control(iteration, out, options, current, step, result, refits);
-  const std::optional<std::size_t> control =
-      options.control ? std::optional<std::size_t>(0) : std::nullopt;
+  const ValidationBar bar = refit_control(iteration, out, options, current, step, result, refits);
   std::optional<std::size_t> winner =
       refit_ranked(iteration, out, options, current, retained, bar, step, result, refits);
   std::vector<DiscoveredTerm> discovered;
@@ -361,10 +431,7 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
       winner = refits.size() - 1;
     }
   }
-  if (!winner && control && step.refits[*control].significant) {
-    winner = control;
-    step.reoptimised = true;
-  }
+  if (!winner) winner = reoptimise(iteration, out, options, current, step, result, refits);
   if (!winner) {
     record_errors_after(current, step);
     result.iterations.push_back(std::move(step));
@@ -381,8 +448,8 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
   Evaluated& best = refits[*winner];
   record_errors_after(best, step);
   if (step.reoptimised) {
-    std::printf("loop: no effect beats the current model refit alone, which validates better: "
-                "going on from it (re-optimised)\n");
+    std::printf("loop: no effect is credited; going on from the re-optimised model (%s)\n",
+                step.reoptimised_from.c_str());
   } else {
     step.added_effect = step.refits[*winner].effect;
     model.push_back(step.added_effect);

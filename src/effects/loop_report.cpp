@@ -146,6 +146,7 @@ nlohmann::ordered_json iteration_json(const LoopIteration& it) {
   item["added_effect"] = it.added_effect.empty() ? nlohmann::ordered_json(nullptr)
                                                  : nlohmann::ordered_json(it.added_effect);
   item["reoptimised"] = it.reoptimised;
+  if (it.reoptimised) item["reoptimised_from"] = it.reoptimised_from;
   if (!it.discovery_proposal.empty()) {
     item["discovery"] = {{"proposal", it.discovery_proposal},
                          {"explained", it.discovery_explained},
@@ -178,7 +179,9 @@ nlohmann::ordered_json iteration_json(const LoopIteration& it) {
                       {"free_parameters", r.free_parameters},
                       {"evaluations", r.evaluations},
                       {"seconds", r.seconds},
-                      {"significant", r.significant}});
+                      {"significant", r.significant},
+                      {"inert", r.inert},
+                      {"reoptimises", r.reoptimises}});
   }
   item["refits"] = refits;
   item["model_run_dir"] = it.model_run_dir;
@@ -224,20 +227,21 @@ void write_loop_summary(std::ostringstream& md, const LoopResult& result, const 
   md << (any ? "" : "nothing") << ".\n\n";
   if (user.loop.control) {
     md << "Each iteration also refits the current model alone (`control`); an effect must beat "
-          "the better of the two, and an iteration marked re-optimised went on from the control "
-          "because no effect did.\n\n";
+          "the better of the two. An effect that does nothing at its refit's optimum (*inert*) is "
+          "never credited. An iteration marked re-optimised credited no effect and went on from "
+          "the control or from an inert refit's values without the effect.\n\n";
   }
   md << "| iteration | added | train RMS before → after (deg) | validation RMS before → after "
         "(deg) | validation MAE before → after (mrad) |\n|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < result.iterations.size(); ++i) {
     const LoopIteration& it = result.iterations[i];
-    const std::string added =
-        !it.added_effect.empty() ? it.added_effect : (it.reoptimised ? "– (re-optimised)" : "–");
-    md << "| " << i + 1 << " | " << added << " | "
-       << format("%.4f", it.train_rms_before_deg) << " → " << format("%.4f", it.train_rms_after_deg)
-       << " | " << format("%.4f", it.val_rms_before_deg) << " → "
-       << format("%.4f", it.val_rms_after_deg) << " ("
-       << percent_change(it.val_rms_before_deg, it.val_rms_after_deg) << ") | "
+    const std::string added = !it.added_effect.empty() ? it.added_effect
+                              : it.reoptimised ? "– (re-optimised: " + it.reoptimised_from + ")"
+                                               : "–";
+    md << "| " << i + 1 << " | " << added << " | " << format("%.4f", it.train_rms_before_deg)
+       << " → " << format("%.4f", it.train_rms_after_deg) << " | "
+       << format("%.4f", it.val_rms_before_deg) << " → " << format("%.4f", it.val_rms_after_deg)
+       << " (" << percent_change(it.val_rms_before_deg, it.val_rms_after_deg) << ") | "
        << format("%.3f", 1e3 * it.val_mae_before_rad) << " → "
        << format("%.3f", 1e3 * it.val_mae_after_rad) << " |\n";
   }
@@ -267,7 +271,12 @@ void write_loop_iterations(std::ostringstream& md, const LoopResult& result) {
       md << "| " << r.effect << " | " << format("%.4f", r.train_rms_deg) << " | "
          << format("%.4f", r.val_rms_deg) << " | " << format("%.1f", r.val_bic) << " | "
          << r.free_parameters << " | " << r.evaluations << " | " << format("%.1f", r.seconds)
-         << " | " << (r.significant ? "yes" : "no") << " |\n";
+         << " | "
+         << (r.significant   ? "yes"
+             : r.inert       ? (r.reoptimises ? "no (inert; re-optimises)" : "no (inert)")
+             : r.reoptimises ? "re-optimises"
+                             : "no")
+         << " |\n";
     }
     if (!it.discovery_proposal.empty()) {
       md << "\nNo library effect helped; discovery proposed " << it.discovery_proposal

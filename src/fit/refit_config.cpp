@@ -92,6 +92,18 @@ FitSpec refit_spec(const FitConfig& from, const nlohmann::json& fitted_free, con
   return spec;
 }
 
+FitSpec evaluation_spec(const FitConfig& from, const nlohmann::json& fitted_free,
+                        const std::string& dir) {
+  const Effect nothing{"evaluation", "", "", {}, false, 0};
+  FitSpec spec = refit_spec(from, fitted_free, nothing, {}, dir, nullptr, true);
+  spec.name = from.name;
+  spec.budget = FitBudget{};
+  spec.budget.max_evaluations = 1;
+  spec.polish = PolishSpec{};
+  spec.polish.covariance = false;
+  return spec;
+}
+
 std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitted_free,
                                const Effect& effect,
                                const std::vector<std::pair<std::string, double>>& effect_start,

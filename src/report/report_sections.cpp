@@ -257,11 +257,13 @@ std::string loop_section_html(const RunRecord& record) {
       const double after = number_or_nan(at(it, {"val_rms_after"}));
       const json& added = at(it, {"added_effect"});
       const json& reoptimised = at(it, {"reoptimised"});
-      const std::string what = added.is_string() ? added.get<std::string>()
-                               : reoptimised.is_boolean() && reoptimised.get<bool>()
-                                   ? "– (re-optimised)"
-                                   : "–";
-      html += "<tr><td>" + std::to_string(i + 1) + "</td><td>" + escape_html(what) +
+      const std::string what =
+          added.is_string() ? added.get<std::string>()
+          : reoptimised.is_boolean() && reoptimised.get<bool>()
+              ? "– (re-optimised: " + text_of(at(it, {"reoptimised_from"})) + ")"
+              : "–";
+      html +=
+          "<tr><td>" + std::to_string(i + 1) + "</td><td>" + escape_html(what) +
           "</td><td class=\"num\">" +
           escape_html(format_number(number_or_nan(at(it, {"train_rms_before"})), 4)) + " → " +
           escape_html(format_number(number_or_nan(at(it, {"train_rms_after"})), 4)) +

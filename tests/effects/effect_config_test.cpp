@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 
 #include "cli/cli_test_support.hpp"
 #include "effect_test_support.hpp"
@@ -194,6 +195,31 @@ TEST(EffectConfig, RefitScanIsReadAndChecked) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("scan"), std::string::npos) << e.what();
   }
+}
+
+// evaluation_spec: the loop's carry-over of re-optimised values to a model without the refit's
+// effect is a fit of the model's own parameters that evaluates exactly those values once.
+TEST(EffectConfig, AnEvaluationSpecScoresExactlyTheGivenValuesOnce) {
+  const auto dir = fresh_dir("effect_config_evaluation");
+  const FitConfig base = load_fit_config(write_hidden_bench_fit(dir, "none", "{}"));
+  nlohmann::json fitted = nlohmann::json::object();
+  for (const FreeParameter& p : base.free_parameters) fitted[p.name] = 0.5 * (p.lower + p.upper);
+  fitted["joint.pendulum.stribeck_nm"] = 0.1;  // an effect's parameter: not part of the model
+  const FitSpec spec = evaluation_spec(base, fitted, (dir / "evaluation").string());
+  std::filesystem::create_directories(dir / "evaluation");
+  std::ofstream(dir / "evaluation" / "fit.yaml") << fit_spec_to_json(spec).dump(2) << "\n";
+  const FitConfig config = load_fit_config((dir / "evaluation" / "fit.yaml").string());
+  ASSERT_EQ(config.free_parameters.size(), base.free_parameters.size());
+  EXPECT_EQ(config.name, base.name);
+  const FinishedFit fit = ensure_fit(config);
+  EXPECT_EQ(fit.summary.value("evaluations", 0), 1);
+  ParameterSet expected = config.space->base();
+  for (const FreeParameter& p : base.free_parameters) {
+    EXPECT_EQ(fit.best_json["free"][p.name].get<double>(), fitted[p.name].get<double>()) << p.name;
+    expected.set(p.name, fitted[p.name].get<double>());
+  }
+  EXPECT_EQ(fit.best.get("joint.pendulum.stribeck_nm"), 0.0);
+  EXPECT_EQ(fit.summary.value("best_fitness", 0.0), config.train->evaluate(expected).fitness);
 }
 
 // `loop: {control: ...}`: on unless switched off, kept when the spec is written back (the loop's

@@ -75,19 +75,60 @@ TEST(HiddenEffectLoopNone, AddsNothingWhenNothingIsMissing) {
   EXPECT_EQ(result.final_model, result.base_model);
   ASSERT_FALSE(it.refits.empty());
   EXPECT_EQ(it.refits.front().effect, "control");
-  for (const LoopRefit& refit : it.refits) {
-    if (refit.effect != "control") {
-      EXPECT_FALSE(refit.significant) << refit.effect;
-    }
-  }
+  for (const LoopRefit& refit : it.refits) EXPECT_FALSE(refit.significant) << refit.effect;
   if (it.reoptimised) {
-    EXPECT_TRUE(it.refits.front().significant);
-    EXPECT_LE(it.val_rms_after_deg, it.refits.front().val_rms_deg);
+    const auto from = std::find_if(it.refits.begin(), it.refits.end(), [&](const LoopRefit& r) {
+      return r.effect == it.reoptimised_from;
+    });
+    ASSERT_NE(from, it.refits.end()) << it.reoptimised_from;
+    EXPECT_TRUE(from->reoptimises);
+    EXPECT_TRUE(from->effect == "control" || from->inert) << from->effect;
+    // Carried over without the inert effect's parameters, the model validates as that refit did.
+    EXPECT_NEAR(it.val_rms_after_deg, from->val_rms_deg, 1e-12);
   } else {
     EXPECT_EQ(it.val_rms_after_deg, it.val_rms_before_deg);
   }
   std::printf("none: validation RMS %.4f -> %.4f deg (%s)\n", it.val_rms_before_deg,
               it.val_rms_after_deg, it.reoptimised ? "re-optimised" : "unchanged");
+}
+
+// On logs with nothing missing, from a base fit stopped after 40 evaluations, a refit with load
+// friction validates better: its wide search re-optimises the base's own parameters. Without a
+// control refit the loop credits load friction with that gain (a false effect); with one, the
+// control reaches the same and load friction is not added.
+LoopResult unconverged_none_loop(const std::string& name, const char* control) {
+  const fs::path dir = fresh_dir(name);
+  const std::string loop =
+      std::string("{candidates: 1, max_iterations: 1, control: ") + control +
+      ", effects: [load_friction], refit: {strategy: {kind: cma_es, sigma: 0.2, restarts: 0}, "
+      "budget: {evaluations: 240}}}";
+  return run_loop(write_hidden_bench_fit(dir, "none", loop, "", "{evaluations: 40}"), {},
+                  kForceUnconverged);
+}
+
+TEST(HiddenEffectLoopNone, TheControlRefitKeepsAReoptimisationFromBeingCreditedToAnEffect) {
+  const LoopResult without = unconverged_none_loop("loop_uncontrolled", "false");
+  const LoopResult with = unconverged_none_loop("loop_controlled", "true");
+  ASSERT_EQ(without.iterations.size(), 1u);
+  ASSERT_EQ(with.iterations.size(), 1u);
+  const LoopIteration& a = without.iterations.front();
+  const LoopIteration& b = with.iterations.front();
+  std::printf(
+      "none, base at 40 evaluations: without control %s (%.4f -> %.4f deg); with control "
+      "%s%s (%.4f -> %.4f deg)\n",
+      a.added_effect.empty() ? "nothing added" : ("added " + a.added_effect).c_str(),
+      a.val_rms_before_deg, a.val_rms_after_deg,
+      b.added_effect.empty() ? "nothing added" : ("added " + b.added_effect).c_str(),
+      b.reoptimised ? ", re-optimised" : "", b.val_rms_before_deg, b.val_rms_after_deg);
+  EXPECT_EQ(a.added_effect, "load_friction");  // the false effect the control is there to stop
+  EXPECT_TRUE(b.added_effect.empty());
+  EXPECT_EQ(with.final_model, with.base_model);
+  ASSERT_GE(b.refits.size(), 2u);
+  EXPECT_EQ(b.refits[0].effect, "control");
+  EXPECT_FALSE(b.refits[1].significant);
+  // The gain is kept all the same, as a re-optimisation of the base model.
+  EXPECT_TRUE(b.reoptimised);
+  EXPECT_LT(b.val_rms_after_deg, 0.95 * b.val_rms_before_deg);
 }
 
 TEST(HiddenEffectLoopResume, ASecondRunReusesTheFinishedFits) {

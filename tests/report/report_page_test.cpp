@@ -164,6 +164,7 @@ TEST(RenderReport, ALoopDirShowsBeforeAndAfter) {
     "iterations": [{"added_effect": "stribeck",
     "train_rms_before": 0.2, "train_rms_after": 0.1, "val_rms_before": 0.1553,
     "val_rms_after": 0.0605}, {"added_effect": null, "reoptimised": true,
+    "reoptimised_from": "control",
     "train_rms_before": 0.1, "train_rms_after": 0.09, "val_rms_before": 0.0605,
     "val_rms_after": 0.0550}], "final_run_dir": ")" +
                                     (dir / "01_stribeck").string() + R"("})");
@@ -174,7 +175,7 @@ TEST(RenderReport, ALoopDirShowsBeforeAndAfter) {
   EXPECT_NE(html.find("0.1553 → 0.0605"), std::string::npos);
   EXPECT_NE(html.find("-61 %"), std::string::npos);
   // The second iteration added nothing but went on from the control refit.
-  EXPECT_NE(html.find("<td>2</td><td>– (re-optimised)</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>2</td><td>– (re-optimised: control)</td>"), std::string::npos);
   EXPECT_NE(html.find("Final model adds: stribeck."), std::string::npos);
   EXPECT_NE(html.find("the loop&#39;s final model"), std::string::npos);
 }

@@ -31,7 +31,15 @@ struct LoopRefit {
   std::size_t free_parameters = 0;
   std::uint64_t evaluations = 0;
   double seconds = 0.0;
-  bool significant = false;  // passes the gain and BIC tests
+  bool significant = false;  // passes the gain and BIC tests: the effect is credited
+  // The effect does nothing at the refit's optimum: with its parameters back at the current
+  // model's (neutral) values the training fitness is the same (a Stribeck term fitted to 0 N·m,
+  // a current limit above every current). Such a refit only re-optimised the model's own
+  // parameters: it is never significant, and counts as a control.
+  bool inert = false;
+  // A control, or an inert refit, that passes the tests against the current model: a candidate
+  // for going on re-optimised when no effect is credited.
+  bool reoptimises = false;
 };
 
 struct LoopIteration {
@@ -39,9 +47,11 @@ struct LoopIteration {
   EffectRanking ranking;
   std::vector<LoopRefit> refits;
   std::string added_effect;  // empty: nothing helped; "discovered_torque": discovered terms
-  // No effect was added, but the control refit (the current model refit alone, refits row
-  // "control") passed the validation tests: the loop went on from it (LoopOptions::control).
+  // No effect was added, but a re-optimisation of the current model (the control refit, or an
+  // inert effect's refit with the effect dropped, run dir NN_reoptimised) passed the validation
+  // tests: the loop went on from it (LoopOptions::control).
   bool reoptimised = false;
+  std::string reoptimised_from;  // the refit row it came from ("control" or the inert effect)
   // When no library effect helped and discovery ran: what it proposed (formula with the
   // linearised estimates), its score, and the refit's formula when it was added.
   std::string discovery_proposal;

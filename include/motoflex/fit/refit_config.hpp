@@ -32,4 +32,11 @@ std::string write_refit_config(const FitConfig& from, const nlohmann::json& fitt
                                const std::string& dir, const nlohmann::json& start_free = nullptr,
                                bool start_is_incumbent = false);
 
+// The model of `from`, nothing added, at `fitted_free`'s values of its own free parameters (other
+// names in it are ignored), as a fit spec in `dir` whose search is a single evaluation of those
+// values (they are its start and incumbent; budget one evaluation, no polish, no covariance): how
+// the loop carries a refit's re-optimised values over to the model without the refit's effect.
+FitSpec evaluation_spec(const FitConfig& from, const nlohmann::json& fitted_free,
+                        const std::string& dir);
+
 }  // namespace motoflex
