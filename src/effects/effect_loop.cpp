@@ -438,10 +438,12 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
     std::printf("loop: no candidate improves the validation error significantly; stop\n");
     return false;
   }
+  // (A re-optimisation from an inert refit is a fit of its own, past the end of step.refits.)
+  const std::string chosen =
+      step.reoptimised ? step.reoptimised_from : step.refits[*winner].effect;
   retained.clear();
   for (const LoopRefit& refit : step.refits) {
-    if (refit.significant && refit.effect != step.refits[*winner].effect &&
-        refit.effect != kDiscovered && refit.effect != kControl) {
+    if (refit.significant && refit.effect != chosen && refit.effect != kDiscovered) {
       retained.push_back(refit.effect);
     }
   }
@@ -451,7 +453,7 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
     std::printf("loop: no effect is credited; going on from the re-optimised model (%s)\n",
                 step.reoptimised_from.c_str());
   } else {
-    step.added_effect = step.refits[*winner].effect;
+    step.added_effect = chosen;
     model.push_back(step.added_effect);
     if (step.added_effect == kDiscovered) {
       step.discovered_formula = discovered_formula(discovered, best.fit.best);
