@@ -239,11 +239,11 @@ LoopRefit refit_with(const Evaluated& current, const RefitStart& candidate, cons
   const bool control = candidate.effect->parameters.empty();
   row.inert = effect_inert(current, *candidate.effect, refit, result);
   row.significant = !control && !row.inert && passes(refit.validation, bar, options);
-  row.reoptimises =
-      (control || row.inert) && passes(refit.validation, bar_of(current.validation), options);
+  // (An inert refit's own re-optimisation is judged in reoptimise(), without the effect.)
+  row.reoptimises = control && passes(refit.validation, bar_of(current.validation), options);
   std::string verdict = row.significant ? "significant" : "not significant";
-  if (row.inert) verdict = "inert: the effect does nothing at the refit's optimum";
-  if (row.reoptimises) verdict += control ? "; re-optimises" : ", but it re-optimises";
+  if (row.inert) verdict = "inert: the effect does not help at the refit's optimum";
+  if (row.reoptimises) verdict += "; re-optimises";
   std::printf("loop:   %s: validation RMS %.4g -> %.4g deg, MAE %.4g -> %.4g mrad (%s)\n",
               row.effect.c_str(), current.validation.rms_deg, row.val_rms_deg,
               1e3 * current.validation.mae_rad, 1e3 * row.val_mae_rad, verdict.c_str());
@@ -297,10 +297,10 @@ std::vector<DiscoveredTerm> discover_and_refit(std::size_t iteration, const fs::
 }
 
 // The current model, nothing added, at `source`'s values of its own parameters, as a fit of its
-// own in `dir` (those values are its incumbent; one evaluation, no search, no polish): how the
-// loop goes on from an inert effect's refit without the effect (its parameters did nothing).
-Evaluated reoptimised_fit(const Evaluated& current, const Evaluated& source, const std::string& dir,
-                          const LoopOptions& options, LoopResult& result) {
+// own in `dir` (those values are its incumbent; one evaluation, no search, no polish): an inert
+// effect's refit carried over to the model without the effect.
+Evaluated without_effect(const Evaluated& current, const Evaluated& source, const std::string& dir,
+                         const LoopOptions& options, LoopResult& result) {
   const fs::path yaml = fs::path(dir) / "fit.yaml";
   if (!fs::exists(yaml)) {
     const FitSpec spec = evaluation_spec(current.fit.config, source.fit.best_json["free"], dir);
@@ -311,8 +311,6 @@ Evaluated reoptimised_fit(const Evaluated& current, const Evaluated& source, con
                               "(JSON is valid YAML)\n" +
                               fit_spec_to_json(spec).dump(2) + "\n");
   }
-  std::printf("loop: re-optimised model -> %s\n", dir.c_str());
-  std::fflush(stdout);
   FitConfig config = load_fit_config(yaml.string());
   config.loop = options;
   config.threads = current.fit.config.threads;
@@ -383,27 +381,42 @@ std::optional<std::size_t> refit_ranked(std::size_t iteration, const fs::path& o
   return winner;
 }
 
-// No effect was credited: the best re-optimisation of the current model that passed the tests
-// (the control, or an inert effect's refit carried over without the effect), by validation BIC;
-// its index into `refits`, if any.
+// No effect was credited: the best re-optimisation of the current model that passes the tests
+// against it, by validation BIC: the control, or an inert effect's refit carried over without
+// the effect (NN_reoptimised_<effect>, judged on its own validation); its index into `refits`.
 std::optional<std::size_t> reoptimise(std::size_t iteration, const fs::path& out,
                                       const LoopOptions& options, const Evaluated& current,
                                       LoopIteration& step, LoopResult& result,
                                       std::vector<Evaluated>& refits) {
-  std::optional<std::size_t> best;
-  for (std::size_t i = 0; i < step.refits.size(); ++i) {
-    if (step.refits[i].reoptimises &&
-        (!best || refits[i].validation.bic < refits[*best].validation.bic)) {
-      best = i;
+  std::optional<std::size_t> best;  // into refits
+  std::string from;
+  const auto consider = [&](std::size_t index, const std::string& effect) {
+    if (!best || refits[index].validation.bic < refits[*best].validation.bic) {
+      best = index;
+      from = effect;
     }
+  };
+  const std::size_t rows = step.refits.size();
+  for (std::size_t i = 0; i < rows; ++i) {
+    LoopRefit& row = step.refits[i];
+    if (row.reoptimises) consider(i, row.effect);
+    if (!row.inert) continue;
+    const std::string dir = iteration_dir(out, iteration, "reoptimised_" + row.effect);
+    refits.push_back(without_effect(current, refits[i], dir, options, result));
+    row.reoptimises = passes(refits.back().validation, bar_of(current.validation), options);
+    std::printf(
+        "loop:   %s dropped, its refit's values: validation RMS %.4g deg, MAE %.4g mrad "
+        "(%s)\n",
+        row.effect.c_str(), refits.back().validation.rms_deg,
+        1e3 * refits.back().validation.mae_rad,
+        row.reoptimises ? "re-optimises" : "does not re-optimise");
+    std::fflush(stdout);
+    if (row.reoptimises) consider(refits.size() - 1, row.effect);
   }
   if (!best) return std::nullopt;
   step.reoptimised = true;
-  step.reoptimised_from = step.refits[*best].effect;
-  if (step.reoptimised_from == kControl) return best;
-  refits.push_back(reoptimised_fit(current, refits[*best],
-                                   iteration_dir(out, iteration, "reoptimised"), options, result));
-  return refits.size() - 1;
+  step.reoptimised_from = from;
+  return best;
 }
 
 // One iteration: rank, refit the current model alone (the control) and with each top candidate,
@@ -439,8 +452,7 @@ bool run_iteration(std::size_t iteration, const fs::path& out, const LoopOptions
     return false;
   }
   // (A re-optimisation from an inert refit is a fit of its own, past the end of step.refits.)
-  const std::string chosen =
-      step.reoptimised ? step.reoptimised_from : step.refits[*winner].effect;
+  const std::string chosen = step.reoptimised ? step.reoptimised_from : step.refits[*winner].effect;
   retained.clear();
   for (const LoopRefit& refit : step.refits) {
     if (refit.significant && refit.effect != chosen && refit.effect != kDiscovered) {

@@ -131,6 +131,45 @@ TEST(HiddenEffectLoopNone, TheControlRefitKeepsAReoptimisationFromBeingCreditedT
   EXPECT_LT(b.val_rms_after_deg, 0.95 * b.val_rms_before_deg);
 }
 
+// An effect that does not help at its refit's optimum is never added. On the Stribeck logs, from
+// a base stopped after 40 evaluations and without a control, the only candidate is load
+// friction: its refit re-optimises the base's own parameters and validates better, but switching
+// load friction off there scores better still on the training logs, so it is inert. The loop
+// goes on from the refit's values without load friction (01_reoptimised_load_friction, one
+// evaluation), judged on their own validation.
+TEST(HiddenEffectLoopNone, AnInertEffectIsNotAddedButItsReoptimisationIsKept) {
+  const fs::path dir = fresh_dir("loop_inert");
+  const std::string fit = write_hidden_bench_fit(
+      dir, "stribeck",
+      "{candidates: 1, max_iterations: 1, control: false, effects: [load_friction], refit: "
+      "{strategy: {kind: cma_es, sigma: 0.2, restarts: 0}, budget: {evaluations: 240}}}",
+      "", "{evaluations: 40}");
+  const LoopResult result = run_loop(fit, {}, kForceUnconverged);
+  ASSERT_EQ(result.iterations.size(), 1u);
+  const LoopIteration& it = result.iterations.front();
+  ASSERT_EQ(it.refits.size(), 1u);
+  const LoopRefit& refit = it.refits.front();
+  std::printf("inert load friction on Stribeck logs: validation RMS %.4f -> %.4f deg (refit)\n",
+              it.val_rms_before_deg, refit.val_rms_deg);
+  EXPECT_EQ(refit.effect, "load_friction");
+  EXPECT_TRUE(refit.inert);
+  EXPECT_FALSE(refit.significant);
+  ASSERT_TRUE(refit.reoptimises);
+  EXPECT_TRUE(it.reoptimised);
+  EXPECT_EQ(it.reoptimised_from, "load_friction");
+  EXPECT_TRUE(it.added_effect.empty());
+  EXPECT_EQ(result.final_model, result.base_model);
+  const FinishedFit final_fit = load_finished_fit(result.final_run_dir);
+  EXPECT_EQ(fs::path(result.final_run_dir).filename(), "01_reoptimised_load_friction");
+  EXPECT_LT(it.val_rms_after_deg, 0.95 * it.val_rms_before_deg);
+  // Its training fitness is no worse than the refit's (that is what inert means).
+  const FinishedFit refit_fit = load_finished_fit(refit.run_dir);
+  EXPECT_LE(final_fit.summary.value("best_fitness", 1.0),
+            refit_fit.summary.value("best_fitness", 0.0));
+  EXPECT_EQ(final_fit.config.space->dimension(), 4u);  // the base's four: no load friction
+  EXPECT_EQ(final_fit.summary.value("evaluations", 0), 1);
+}
+
 TEST(HiddenEffectLoopResume, ASecondRunReusesTheFinishedFits) {
   const fs::path dir = fresh_dir("loop_resume");
   const std::string fit = write_hidden_bench_fit(

@@ -32,13 +32,14 @@ struct LoopRefit {
   std::uint64_t evaluations = 0;
   double seconds = 0.0;
   bool significant = false;  // passes the gain and BIC tests: the effect is credited
-  // The effect does nothing at the refit's optimum: with its parameters back at the current
-  // model's (neutral) values the training fitness is the same (a Stribeck term fitted to 0 N·m,
-  // a current limit above every current). Such a refit only re-optimised the model's own
-  // parameters: it is never significant, and counts as a control.
+  // The effect does not help at the refit's optimum: with its parameters back at the current
+  // model's (neutral) values the training fitness is no worse (a Stribeck term fitted to 0 N·m,
+  // a current limit above every current; inert_effect.hpp). Such a refit only re-optimised the
+  // model's own parameters: it is never significant.
   bool inert = false;
-  // A control, or an inert refit, that passes the tests against the current model: a candidate
-  // for going on re-optimised when no effect is credited.
+  // A control that passes the tests against the current model, or an inert refit whose values
+  // without the effect (NN_reoptimised_<effect>) do: a candidate for going on re-optimised when
+  // no effect is credited.
   bool reoptimises = false;
 };
 
@@ -48,8 +49,8 @@ struct LoopIteration {
   std::vector<LoopRefit> refits;
   std::string added_effect;  // empty: nothing helped; "discovered_torque": discovered terms
   // No effect was added, but a re-optimisation of the current model (the control refit, or an
-  // inert effect's refit with the effect dropped, run dir NN_reoptimised) passed the validation
-  // tests: the loop went on from it (LoopOptions::control).
+  // inert effect's refit with the effect dropped, run dir NN_reoptimised_<effect>) passed the
+  // validation tests: the loop went on from it (LoopOptions::control).
   bool reoptimised = false;
   std::string reoptimised_from;  // the refit row it came from ("control" or the inert effect)
   // When no library effect helped and discovery ran: what it proposed (formula with the

@@ -1,10 +1,11 @@
 #pragma once
 
-// Whether a loop refit's new effect does anything at the refit's optimum (effect_loop.hpp,
+// Whether a loop refit's new effect helps at the refit's optimum (effect_loop.hpp,
 // LoopRefit::inert). A refit frees the current model's parameters and the effect's; a wide
-// search can end at a better optimum of the model's own parameters with the effect switched
-// off (a Stribeck term fitted to 0 N·m, a current limit above every current the logs draw).
-// Such a refit only re-optimised the model, and its gain must not be credited to the effect.
+// search can end at a better optimum of the model's own parameters where the effect does
+// nothing (a Stribeck term fitted to 0 N·m, a current limit above every current the logs draw)
+// or even harms (a budget-limited search that left the effect on where switching it off scores
+// better). Such a refit only re-optimised the model, and its gain must not go to the effect.
 
 #include <cstddef>
 
