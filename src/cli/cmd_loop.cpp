@@ -35,8 +35,11 @@ int run_loop_command(const LoopArgs& args) {
     std::printf("%s%s", i ? " + " : "", result.final_model[i].c_str());
   }
   if (!result.iterations.empty()) {
-    std::printf("; validation RMS %.4g -> %.4g deg", result.iterations.front().val_rms_before_deg,
-                result.iterations.back().val_rms_after_deg);
+    std::printf("; validation RMS %.4g -> %.4g deg, MAE %.4g -> %.4g mrad",
+                result.iterations.front().val_rms_before_deg,
+                result.iterations.back().val_rms_after_deg,
+                1e3 * result.iterations.front().val_mae_before_rad,
+                1e3 * result.iterations.back().val_mae_after_rad);
   }
   std::printf("; %llu evaluations, %.1f s; see %s/report.md\n",
               static_cast<unsigned long long>(result.evaluations), result.wall_seconds,
@@ -47,6 +50,8 @@ int run_loop_command(const LoopArgs& args) {
   for (const auto& iteration : result.iterations) {
     for (const auto& refit : iteration.refits) write_report_after_run(refit.run_dir);
   }
+  // A re-optimised model carried over from an inert refit is a fit of its own (NN_reoptimised_*).
+  if (result.final_run_dir != result.base_run_dir) write_report_after_run(result.final_run_dir);
   write_report_after_run(result.out_dir);
   return 0;
 }

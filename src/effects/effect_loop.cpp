@@ -328,7 +328,9 @@ ValidationBar refit_control(std::size_t iteration, const fs::path& out, const Lo
                             std::vector<Evaluated>& refits) {
   ValidationBar bar = bar_of(current.validation);
   if (!options.control) return bar;
-  const RefitStart start{&control_effect(), {}, {}};
+  // It starts as an effect's refit does: at the linearised step of the model's own parameters
+  // (with no effect column), or at the current model when that step is worse.
+  const RefitStart start{&control_effect(), {}, step.ranking.fit_start};
   step.refits.push_back(refit_with(current, start, iteration_dir(out, iteration, kControl), options,
                                    bar, result, refits));
   const ErrorSummary& control = refits.back().validation;

@@ -185,6 +185,21 @@ std::vector<Column> regression_columns(const Probe& probe, std::size_t probed,
   return columns;
 }
 
+// The fit's own free parameters (name → value) after the Gauss-Newton step `beta` (its first
+// jacobian.columns.size() coefficients), clipped to the bounds.
+std::vector<std::pair<std::string, double>> fit_step(const Eigen::VectorXd& beta,
+                                                     const FitConfig& config,
+                                                     const FitJacobian& jacobian) {
+  const ParameterSpace& space = *config.space;
+  std::vector<std::pair<std::string, double>> start;
+  for (std::size_t i = 0; i < jacobian.columns.size(); ++i) {
+    const Direction& d = jacobian.directions[i];
+    const double coordinate = std::clamp(d.current + beta(i) * d.step, d.lower, d.upper);
+    start.emplace_back(space.free_parameters()[i].name, space.to_model(i, coordinate));
+  }
+  return start;
+}
+
 // The warm start (the Gauss-Newton step of the fit's parameters, clipped) and the effect's
 // estimated values from the coefficients `beta`.
 void warm_start_and_estimate(const Probe& probe, const std::vector<Direction>& dirs,
@@ -192,12 +207,7 @@ void warm_start_and_estimate(const Probe& probe, const std::vector<Direction>& d
                              const Eigen::VectorXd& beta, std::size_t base_columns,
                              const FitConfig& config, const FitJacobian& jacobian,
                              EffectScore& score) {
-  const ParameterSpace& space = *config.space;
-  for (std::size_t i = 0; i < base_columns; ++i) {
-    const Direction& d = jacobian.directions[i];
-    const double coordinate = std::clamp(d.current + beta(i) * d.step, d.lower, d.upper);
-    score.fit_start.emplace_back(space.free_parameters()[i].name, space.to_model(i, coordinate));
-  }
+  score.fit_start = fit_step(beta, config, jacobian);
   for (std::size_t t = 0; t < probe.targets.size(); ++t) {
     double coordinate = dirs[t].current;
     for (std::size_t c = 0; c < coefficient_targets.size(); ++c) {
@@ -207,6 +217,19 @@ void warm_start_and_estimate(const Probe& probe, const std::vector<Direction>& d
     }
     score.estimate.emplace_back(probe.targets[t].name, to_model(probe.targets[t], coordinate));
   }
+}
+
+// The Gauss-Newton step of the fit's own parameters on their columns alone (clipped to the
+// bounds), as free parameter name → value.
+std::vector<std::pair<std::string, double>> base_step(const Residual& residual,
+                                                      const FitConfig& config,
+                                                      const FitJacobian& jacobian) {
+  const std::size_t channels = residual.channels;
+  std::vector<Column> columns;
+  for (const auto& field : jacobian.columns) columns.push_back(on_every_channel(&field, channels));
+  if (columns.empty()) return {};
+  double rss = residual.rss;
+  return fit_step(solve(columns, residual, &rss), config, jacobian);
 }
 
 EffectScore score_probe(const Probe& probe, const Residual& residual, const ParameterSet& current,
@@ -315,6 +338,7 @@ EffectRanking rank_effects(const FitConfig& config, const ParameterSet& current,
 
   const FitJacobian jacobian = fit_jacobian(config, current, residual, threads);
   ranking.jacobian_rollouts = config.space->dimension();
+  ranking.fit_start = base_step(residual, config, jacobian);
   std::vector<EffectScore> scored(probes.size());
   const int n = static_cast<int>(probes.size());
 #pragma omp parallel for schedule(dynamic) num_threads(std::max(threads, 1))

@@ -46,6 +46,10 @@ struct EffectRanking {
   std::size_t samples = 0;          // N: scored frames × joints over the training logs
   double effective_samples = 0.0;   // N_eff = N·(1 − ρ)/(1 + ρ), ρ the lag-1 autocorrelation
   std::size_t jacobian_rollouts = 0;  // probes of the fit's own free parameters
+  // The fit's own free parameters (name → value) after the linearised step on their own
+  // columns, no effect added: the start of the loop's control refit, so that it starts where an
+  // effect's refit would with the effect at zero (EffectScore::fit_start).
+  std::vector<std::pair<std::string, double>> fit_start;
   // False when the ranked fit did not converge (motoflex residuals/loop --force): its residual
   // mixes a missing effect with the optimiser's unfinished work, so the order may be wrong.
   bool reliable = true;

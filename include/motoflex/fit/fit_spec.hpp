@@ -28,8 +28,10 @@
 //   seed: 1
 //   out: ../../runs/nao_quick
 //   polish: {method: lm, max_iterations: 20, jacobian_step: 1e-3, covariance: true}
-//   loop: {candidates: 3, max_iterations: 3, min_gain: 0.05, effects: [...],
-//          refit: {strategy: {kind: cma_es, sigma: 0.1}, budget: {evaluations: 240}}}
+//   loop: {candidates: 3, widen: 0, max_iterations: 3, min_gain: 0.05, effects: [...],
+//          control: true, discover_terms: 0, discover_always: false, discover_screen: 0,
+//          refit: {strategy: {kind: cma_es, sigma: 0.1}, budget: {evaluations: 240},
+//                  polish: {method: lm}, scan: 0}}
 
 #include <cstdint>
 #include <map>
@@ -152,10 +154,10 @@ struct LoopOptions {
   // Refit the current model alone in each iteration too (the control, `NN_control`), with the
   // same start, strategy, budget and polish as an effect's refit. A refit can find a better
   // optimum of the parameters the model already has; without the control that gain is credited
-  // to whichever effect was being refit (a current limit fitted far above any current, a
-  // Stribeck term fitted to zero). With it an effect must beat the better of the current model
-  // and the control, and when no effect does but the control itself passes the validation tests,
-  // the loop goes on from the control ("re-optimised", no effect added).
+  // to whichever effect was being refit. With it an effect must beat the better of the current
+  // model and the control, and when no effect is credited but the control passes the validation
+  // tests, the loop goes on from it ("re-optimised", no effect added). (Independently of this
+  // switch an effect that does not help at its refit's optimum is never added: inert_effect.hpp.)
   bool control = true;
   LoopOptions() {
     refit_strategy.kind = "cma_es";
