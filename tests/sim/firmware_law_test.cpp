@@ -126,9 +126,10 @@ TEST(FirmwareLawTest, WindingHeatingWeakensAStalledServoToTheHotStallTorque) {
     const double c = drive_v * drive_v * r_th_k_per_w / m.r;  // ΔT + a·ΔT² = c
     const double rise_k = (-1.0 + std::sqrt(1.0 + 4.0 * a * c)) / (2.0 * a);
     const double hot_nm = cold_nm / (1.0 + a * rise_k);
-    std::printf("[ firmware ] %-9s stall %.4f N·m cold, %.4f hot (winding +%.1f K), closed form "
-                "%.4f\n",
-                law, cold_nm, hot.torque_nm.back(), rise_k, hot_nm);
+    std::printf(
+        "[ firmware ] %-9s stall %.4f N·m cold, %.4f hot (winding +%.1f K), closed form "
+        "%.4f\n",
+        law, cold_nm, hot.torque_nm.back(), rise_k, hot_nm);
     EXPECT_NEAR(hot.torque_nm.back(), hot_nm, 1e-3 * hot_nm) << law;
     EXPECT_LT(hot.torque_nm.back(), 0.8 * cold_nm) << law;  // +150 K: a third weaker
   }
