@@ -209,7 +209,6 @@ nlohmann::ordered_json loop_json(const LoopResult& result, const FitConfig& user
   return loop;
 }
 
-// The summary table of report.md: what each iteration added and the errors before and after.
 // Logs of a robot without a torso IMU (a servo bench) carry zero IMU columns that the
 // simulation matches exactly: a line of 0 → 0 says nothing, so it is left out.
 bool has_imu_signal(const LoopResult& result) {
@@ -222,6 +221,7 @@ bool has_imu_signal(const LoopResult& result) {
   return false;
 }
 
+// The summary table of report.md: what each iteration added and the errors before and after.
 void write_loop_summary(std::ostringstream& md, const LoopResult& result, const FitConfig& user) {
   md << "# Closing the loop: " << user.name << "\n\n";
   md << "Base model: " << (result.base_model.empty() ? "–" : "");
@@ -257,7 +257,8 @@ void write_loop_summary(std::ostringstream& md, const LoopResult& result, const 
        << format("%.3f", 1e3 * it.val_mae_before_rad) << " → "
        << format("%.3f", 1e3 * it.val_mae_after_rad) << " |\n";
   }
-  for (std::size_t i = 0; i < result.iterations.size() && has_imu_signal(result); ++i) {
+  const bool imu = has_imu_signal(result);
+  for (std::size_t i = 0; imu && i < result.iterations.size(); ++i) {
     const LoopIteration& it = result.iterations[i];
     if (!std::isfinite(it.val_imu_rms_before_deg)) continue;
     md << (i == 0 ? "\nTorso IMU (roll and pitch), validation RMS: " : "; ") << "iteration "

@@ -152,7 +152,8 @@ struct LoopOptions {
   // the linearised start barely moves it; the scan finds where it starts to act.
   std::size_t refit_scan = 0;
   // Refit the current model alone in each iteration too (the control, `NN_control`), with the
-  // same start, strategy, budget and polish as an effect's refit. A refit can find a better
+  // same strategy, budget and polish as an effect's refit, started as one is: at the linearised
+  // step of the model's own parameters (EffectRanking::fit_start). A refit can find a better
   // optimum of the parameters the model already has; without the control that gain is credited
   // to whichever effect was being refit. With it an effect must beat the better of the current
   // model and the control, and when no effect is credited but the control passes the validation
