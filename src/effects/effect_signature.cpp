@@ -139,6 +139,13 @@ std::size_t probed_parameter(const Effect& effect) {
   return probed;
 }
 
+// The fit's own directions as regression columns, each on every channel.
+std::vector<Column> base_columns(const FitJacobian& jacobian, std::size_t channels) {
+  std::vector<Column> columns;
+  for (const auto& field : jacobian.columns) columns.push_back(on_every_channel(&field, channels));
+  return columns;
+}
+
 // The regression's columns: the fit's own directions first, then one coefficient per target
 // of an `each` parameter (on its joints' channels) or one for the tied targets of a global
 // parameter (their joints' channels and the IMU's). The probe moved all targets of an `each`
@@ -153,8 +160,7 @@ std::vector<Column> regression_columns(const Probe& probe, std::size_t probed,
   const Effect& effect = *probe.effect;
   const std::size_t channels = residual.channels;
   const std::size_t n_joints = model.actuators.size();
-  std::vector<Column> columns;
-  for (const auto& field : jacobian.columns) columns.push_back(on_every_channel(&field, channels));
+  std::vector<Column> columns = base_columns(jacobian, channels);
   const bool each = effect.parameters[probed].each;
   std::size_t each_count = 0;
   for (const auto& target : probe.targets) each_count += target.parameter == probed ? 1 : 0;
@@ -224,9 +230,7 @@ void warm_start_and_estimate(const Probe& probe, const std::vector<Direction>& d
 std::vector<std::pair<std::string, double>> base_step(const Residual& residual,
                                                       const FitConfig& config,
                                                       const FitJacobian& jacobian) {
-  const std::size_t channels = residual.channels;
-  std::vector<Column> columns;
-  for (const auto& field : jacobian.columns) columns.push_back(on_every_channel(&field, channels));
+  const std::vector<Column> columns = base_columns(jacobian, residual.channels);
   if (columns.empty()) return {};
   double rss = residual.rss;
   return fit_step(solve(columns, residual, &rss), config, jacobian);
