@@ -260,25 +260,58 @@ TermDiscovery proposal(const Support& best, const std::vector<Candidate>& candid
   return out;
 }
 
-// The training fitness of a proposal's terms added to `current` (the fit's own parameters
-// kept): the nonlinear check of the linearised choice. Where collinear candidates fit the
-// linearised residual about equally, the one the rollouts confirm wins.
-double proposal_fitness(const TermDiscovery& p, const FitConfig& config,
-                        const ParameterSet& current, bool move_fit, double scale) {
-  ParameterSet trial = current;
-  for (const auto& [name, value] : p.estimate) {
-    trial.set(name, current.get(name) + scale * (value - current.get(name)));
+// `p` scaled from `current` by `scale`: each term coefficient and (with `move_fit`) each of the
+// fit's parameters moved `scale` times its proposed step, then held inside its bounds (the
+// terms' ±bound, the fit space's [lower, upper]). A step of 2× from a parameter near a bound
+// would otherwise leave it: a sensor delay fitted at 0.4 ms with a proposed start of 0 became
+// −0.4 ms, which the encoder rejects. Without `move_fit` the fit start is cleared (the refit
+// then starts from the fit's own values).
+TermDiscovery scaled_proposal(const TermDiscovery& p, const FitConfig& config,
+                              const ParameterSet& current, bool move_fit, double scale) {
+  TermDiscovery out = p;
+  const auto scaled_term = [&](const std::string& name, double value) {
+    const TorqueTerm* term = find_torque_term(name);
+    const double bound = term != nullptr ? term->bound : std::numeric_limits<double>::infinity();
+    return std::clamp(current.get(name) + scale * (value - current.get(name)), -bound, bound);
+  };
+  for (auto& [name, value] : out.estimate) value = scaled_term(name, value);
+  for (auto& term : out.terms) term.estimate = scaled_term(term.parameter, term.estimate);
+  if (!move_fit) {
+    out.fit_start.clear();
+    return out;
   }
-  if (move_fit) {
-    const ParameterSpace& space = *config.space;
-    for (std::size_t i = 0; i < p.fit_start.size(); ++i) {
-      const double from = current.get(space.free_parameters()[i].targets.front());
-      for (const auto& target : space.free_parameters()[i].targets) {
-        trial.set(target, from + scale * (p.fit_start[i].second - from));
-      }
+  const ParameterSpace& space = *config.space;
+  for (std::size_t i = 0; i < out.fit_start.size(); ++i) {
+    const double from = current.get(space.free_parameters()[i].targets.front());
+    const double a = space.to_model(i, space.lower()[i]);
+    const double b = space.to_model(i, space.upper()[i]);
+    out.fit_start[i].second =
+        std::clamp(from + scale * (out.fit_start[i].second - from), std::min(a, b), std::max(a, b));
+  }
+  return out;
+}
+
+// The training fitness of a proposal (already scaled) with its terms and fit start set on
+// `current`: the nonlinear check of the linearised choice. Where collinear candidates fit the
+// linearised residual about equally, the one the rollouts confirm wins. A set the model
+// rejects scores infinity, as a rejected candidate does in the fit itself.
+double proposal_fitness(const TermDiscovery& p, const FitConfig& config,
+                        const ParameterSet& current) {
+  ParameterSet trial = current;
+  for (const auto& [name, value] : p.estimate) trial.set(name, value);
+  const ParameterSpace& space = *config.space;
+  for (std::size_t i = 0; i < p.fit_start.size(); ++i) {
+    for (const auto& target : space.free_parameters()[i].targets) {
+      trial.set(target, p.fit_start[i].second);
     }
   }
-  return config.train->evaluate(trial).fitness;
+  try {
+    return config.train->evaluate(trial).fitness;
+  } catch (const std::bad_alloc&) {
+    throw;  // the machine, not the proposal
+  } catch (const std::exception&) {
+    return std::numeric_limits<double>::infinity();
+  }
 }
 
 // The proposal's step scaled by the best of kLineSearch (the linearised size of a term's
@@ -292,35 +325,19 @@ double line_search(TermDiscovery& p, const FitConfig& config, const ParameterSet
   std::array<double, kTrials> fitness{};
 #pragma omp parallel for schedule(dynamic) num_threads(std::max(threads, 1))
   for (int k = 0; k < kTrials; ++k) {
-    fitness[static_cast<std::size_t>(k)] =
-        proposal_fitness(p, config, current, k % 2 == 1, kLineSearch[k / 2]);
+    fitness[static_cast<std::size_t>(k)] = proposal_fitness(
+        scaled_proposal(p, config, current, k % 2 == 1, kLineSearch[k / 2]), config, current);
   }
   *rollouts += kTrials * config.train->cases().size();
   double best = std::numeric_limits<double>::infinity();
-  double best_scale = 1.0;
-  bool best_moved = false;
+  int best_trial = 2;  // scale 1, fit kept: where every trial fails
   for (int k = 0; k < kTrials; ++k) {
     if (fitness[static_cast<std::size_t>(k)] < best) {
       best = fitness[static_cast<std::size_t>(k)];
-      best_scale = kLineSearch[k / 2];
-      best_moved = k % 2 == 1;
+      best_trial = k;
     }
   }
-  for (auto& [name, value] : p.estimate) {
-    value = current.get(name) + best_scale * (value - current.get(name));
-  }
-  for (auto& term : p.terms)
-    term.estimate =
-        current.get(term.parameter) + best_scale * (term.estimate - current.get(term.parameter));
-  if (!best_moved) {
-    p.fit_start.clear();  // the refit then starts from the fit's own values
-  } else {
-    const ParameterSpace& space = *config.space;
-    for (std::size_t i = 0; i < p.fit_start.size(); ++i) {
-      const double from = current.get(space.free_parameters()[i].targets.front());
-      p.fit_start[i].second = from + best_scale * (p.fit_start[i].second - from);
-    }
-  }
+  p = scaled_proposal(p, config, current, best_trial % 2 == 1, kLineSearch[best_trial / 2]);
   return best;
 }
 

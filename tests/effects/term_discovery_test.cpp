@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 
 #include "cli/cli_test_support.hpp"
 #include "effect_test_support.hpp"
@@ -102,6 +103,35 @@ TEST(TermDiscovery, FindsNothingWhenNothingIsMissing) {
   const Discovered d = discover_at_truth("none", "");
   EXPECT_TRUE(d.discovery.terms.empty()) << discovered_formula(d.discovery.terms, d.at);
   EXPECT_EQ(d.discovery.candidates, torque_terms().size());
+}
+
+TEST(TermDiscovery, KeepsTheFitsParametersInsideTheirBoundsAtABound) {
+  // The fit's sensor delay at 0.5 ms on logs recorded without one, its bound at 0: the
+  // linearised step proposes about 0 and the line search's 2× step of that would be −0.5 ms,
+  // which the encoder rejects (this ended `motoflex loop` on the XL330 logs). Every proposal
+  // must stay in the fit's bounds, and the cogging is still found.
+  const auto dir = fresh_dir("discover_at_bound");
+  std::string text = read_text(write_hidden_bench_fit(dir, "cogging", "{}"));
+  const auto from = text.find("free:\n");
+  text.replace(from, text.find("fitness:") - from,
+               "free:\n  joint.pendulum.encoder_offset_rad: {lower: -0.1, upper: 0.1}\n"
+               "  sensor.delay_s: {lower: 0.0, upper: 0.05}\n");
+  std::ofstream(dir / "fit.yaml") << text;
+  const FitConfig config = load_fit_config((dir / "fit.yaml").string());
+  ParameterSet at = hidden_truth("cogging", "train/chirp", config.space->base(), true);
+  ASSERT_EQ(at.get("sensor.delay_s"), 0.0);
+  at.set("joint.pendulum.cogging_nm", 0.0);
+  at.set("sensor.delay_s", 5e-4);
+  TermDiscovery discovery;
+  ASSERT_NO_THROW(discovery = discover_terms(config, at, 2, 3));
+  for (const auto& [name, value] : discovery.fit_start) {
+    if (name == "sensor.delay_s") {
+      EXPECT_GE(value, 0.0);
+    }
+  }
+  EXPECT_NEAR(estimate_of(discovery, "sin6"), 0.04 * std::cos(0.7), 0.006)
+      << discovered_formula(discovery.terms, at);
+  EXPECT_NEAR(estimate_of(discovery, "cos6"), 0.04 * std::sin(0.7), 0.006);
 }
 
 TEST(TermDiscovery, ADiscoveredTermIsTheSameTorqueAsTheTruths) {
