@@ -72,16 +72,17 @@ GenerationReport generation_report(const Strategy& strategy, const std::vector<d
   return report;
 }
 
-// Racing: the first `exact` individuals are evaluated against the strategy's threshold; the rest
-// follow in chunks of the evaluator's width, each against the exact-th best value known so far
-// (just above it, so a tie is evaluated in full). An individual stopped there is worse than
-// `exact` individuals, so it is not among the best `exact` of the batch, and every one of
-// those is exact: the strategy's ranks 0..exact−1 and their values are those of a full
-// evaluation. Chunks keep the batch's indices (EvaluationContext::first_individual), so a
-// problem's random streams are those of a full evaluation too.
-void evaluate_racing(Evaluator& evaluator, Problem& problem,
+// Racing: the first exact_ranks_needed() individuals are evaluated against the strategy's
+// selection threshold; the rest follow in chunks of Strategy::race_chunk, each against
+// Strategy::race_threshold of the values known exactly so far. An individual stopped there
+// cannot influence the run, and every individual that can is evaluated in full, so the
+// strategy's ranks that matter and their values are those of a full evaluation. Chunks keep
+// the batch's indices (EvaluationContext::first_individual), so a problem's random streams are
+// those of a full evaluation too.
+void evaluate_racing(Evaluator& evaluator, Problem& problem, const Strategy& strategy,
                      const std::vector<std::vector<double>>& xs, std::vector<double>& fitness,
-                     const EvaluationContext& context, std::size_t exact) {
+                     const EvaluationContext& context) {
+  const std::size_t exact = strategy.exact_ranks_needed();
   if (exact == 0 || exact >= xs.size()) {
     evaluator.evaluate(problem, xs, fitness, context);
     return;
@@ -89,16 +90,16 @@ void evaluate_racing(Evaluator& evaluator, Problem& problem,
   fitness.clear();
   std::vector<double> exact_values;  // ranked values of the individuals not stopped, ascending
   std::vector<double> chunk_fitness;
-  const auto chunk_size = static_cast<std::size_t>(std::max(1, evaluator.workers()));
+  const std::size_t chunk_size = std::max<std::size_t>(
+      1, strategy.race_chunk(static_cast<std::size_t>(std::max(1, evaluator.workers()))));
   std::size_t begin = 0;
   while (begin < xs.size()) {
-    const std::size_t end = begin == 0 ? exact : std::min(xs.size(), begin + chunk_size);
+    const std::size_t end = std::min(xs.size(), begin + (begin == 0 ? exact : chunk_size));
     EvaluationContext chunk = context;
     chunk.first_individual = context.first_individual + begin;
-    if (begin > 0 && std::isfinite(exact_values[exact - 1])) {
-      chunk.stop_threshold = std::min(
-          context.stop_threshold,
-          std::nextafter(exact_values[exact - 1], std::numeric_limits<double>::infinity()));
+    if (begin > 0) {
+      chunk.stop_threshold =
+          std::min(context.stop_threshold, strategy.race_threshold(exact_values));
     }
     evaluator.evaluate(
         problem,
@@ -194,7 +195,7 @@ RunSummary run_optimisation(Strategy& strategy, Problem& problem, Evaluator& eva
     }
 
     const Clock::time_point evaluation_start = Clock::now();
-    evaluate_racing(evaluator, problem, xs, fitness, context, strategy.exact_ranks_needed());
+    evaluate_racing(evaluator, problem, strategy, xs, fitness, context);
     const double evaluation_seconds = seconds_since(evaluation_start);
     summary.evaluation_seconds += evaluation_seconds;
 

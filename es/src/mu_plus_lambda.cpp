@@ -121,7 +121,8 @@ std::vector<Individual> MuPlusLambda::initial_population() const {
     for (std::size_t i = 0; i < n; ++i) {
       individual.step[i] = clamp_step(options_.initial_step_relative * bounds_.width(i), i);
     }
-    motoflex::RandomStream draws = es_stream(options_.seed, generation_, k, Purpose::kInitialPopulation);
+    motoflex::RandomStream draws =
+        es_stream(options_.seed, generation_, k, Purpose::kInitialPopulation);
     for (std::size_t i = 0; i < n; ++i) {
       const double lower = bounds_.lower[i];
       const double upper = bounds_.upper[i];
@@ -143,7 +144,8 @@ Individual MuPlusLambda::make_offspring(std::uint64_t index) const {
   const std::size_t mu = population_.size();
 
   // ρ distinct parents by a partial Fisher–Yates shuffle of the parent indices.
-  motoflex::RandomStream parent_draws = es_stream(options_.seed, generation_, index, Purpose::kParentChoice);
+  motoflex::RandomStream parent_draws =
+      es_stream(options_.seed, generation_, index, Purpose::kParentChoice);
   std::vector<std::size_t> order(mu);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::vector<const std::vector<double>*> parent_x;
@@ -154,20 +156,23 @@ Individual MuPlusLambda::make_offspring(std::uint64_t index) const {
     parent_step.push_back(&population_[order[j]].step);
   }
 
-  motoflex::RandomStream recombination_draws = es_stream(options_.seed, generation_, index, Purpose::kRecombination);
+  motoflex::RandomStream recombination_draws =
+      es_stream(options_.seed, generation_, index, Purpose::kRecombination);
   Individual child;
   child.x = recombine(parent_x, options_.object_recombination, recombination_draws);
   child.step = recombine(parent_step, options_.step_recombination, recombination_draws);
 
   // Step sizes mutate first and the new ones move x, so selection judges a step size by the
   // step it actually made (Schwefel 1995; DEAP's mutESLogNormal does the same).
-  motoflex::RandomStream step_draws = es_stream(options_.seed, generation_, index, Purpose::kStepSizeMutation);
+  motoflex::RandomStream step_draws =
+      es_stream(options_.seed, generation_, index, Purpose::kStepSizeMutation);
   const double global = tau_global_ * step_draws.normal_libm();
   for (std::size_t i = 0; i < n; ++i) {
     child.step[i] =
         clamp_step(child.step[i] * std::exp(global + tau_local_ * step_draws.normal_libm()), i);
   }
-  motoflex::RandomStream object_draws = es_stream(options_.seed, generation_, index, Purpose::kObjectMutation);
+  motoflex::RandomStream object_draws =
+      es_stream(options_.seed, generation_, index, Purpose::kObjectMutation);
   for (std::size_t i = 0; i < n; ++i) {
     child.x[i] = reflect_into_bounds(child.x[i] + child.step[i] * object_draws.normal_libm(),
                                      bounds_.lower[i], bounds_.upper[i]);
@@ -191,15 +196,37 @@ std::vector<std::vector<double>> MuPlusLambda::ask() {
   return xs;
 }
 
-double MuPlusLambda::selection_threshold() const {
-  if (population_.empty()) return std::numeric_limits<double>::infinity();
+std::vector<double> MuPlusLambda::competing_fitness() const {
   std::vector<double> competing;
   for (const Individual& parent : population_) {
     if (parent.age < options_.kappa) competing.push_back(parent.fitness);
   }
+  return competing;
+}
+
+double MuPlusLambda::selection_threshold() const {
+  if (population_.empty()) return std::numeric_limits<double>::infinity();
+  std::vector<double> competing = competing_fitness();
   if (competing.size() < options_.mu) return std::numeric_limits<double>::infinity();
   std::nth_element(competing.begin(), competing.begin() + (options_.mu - 1), competing.end());
   return competing[options_.mu - 1];
+}
+
+std::size_t MuPlusLambda::exact_ranks_needed() const {
+  // The initial population is the whole first batch and becomes the parents as it is.
+  if (population_.empty() || !options_.racing) return next_batch_size();
+  return std::min(options_.mu, next_batch_size());
+}
+
+double MuPlusLambda::race_threshold(const std::vector<double>& exact_sorted) const {
+  if (population_.empty()) return std::numeric_limits<double>::infinity();
+  // An offspring at or above the μ-th best of this pool lands behind μ individuals that win
+  // every tie against it (parents, and offspring of lower index), so it is never selected.
+  std::vector<double> pool = competing_fitness();
+  pool.insert(pool.end(), exact_sorted.begin(), exact_sorted.end());
+  if (pool.size() < options_.mu) return std::numeric_limits<double>::infinity();
+  std::nth_element(pool.begin(), pool.begin() + (options_.mu - 1), pool.end());
+  return pool[options_.mu - 1];
 }
 
 void MuPlusLambda::select(const std::vector<double>& fitness) {

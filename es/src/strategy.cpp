@@ -1,5 +1,8 @@
 #include "motoflex_es/strategy.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -47,6 +50,16 @@ StopReason stop_reason_from_string(std::string_view text) {
 Strategy::Strategy(Bounds bounds) : bounds_(std::move(bounds)) {
   std::string why;
   if (!bounds_.is_valid(&why)) throw std::invalid_argument(why);
+}
+
+double Strategy::race_threshold(const std::vector<double>& exact_sorted) const {
+  const std::size_t exact = exact_ranks_needed();
+  double threshold = selection_threshold();
+  if (exact > 0 && exact_sorted.size() >= exact && std::isfinite(exact_sorted[exact - 1])) {
+    threshold = std::min(threshold, std::nextafter(exact_sorted[exact - 1],
+                                                   std::numeric_limits<double>::infinity()));
+  }
+  return threshold;
 }
 
 void Strategy::record_evaluation(const std::vector<double>& x, double fitness) {

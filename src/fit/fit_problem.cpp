@@ -136,6 +136,7 @@ std::unique_ptr<motoflex_es::Strategy> make_strategy(const FitConfig& config) {
     options.initial_step_relative = s.initial_step;
     options.start_point = config.space->start();
     options.seed = config.seed;
+    options.racing = s.racing;
     check_options(options.is_valid(&why), why, config.path);
     return std::make_unique<motoflex_es::MuPlusLambda>(bounds, options);
   }
@@ -147,6 +148,7 @@ std::unique_ptr<motoflex_es::Strategy> make_strategy(const FitConfig& config) {
     options.max_restarts = s.restarts;
     options.active = s.active;
     options.pooled_negative_tail = s.pooled_negative_tail;
+    options.racing = s.racing;
     options.seed = config.seed;
     check_options(options.is_valid(&why), why, config.path);
     return std::make_unique<motoflex_es::CmaEs>(bounds, options);

@@ -28,7 +28,7 @@ FitBudget read_budget(const YamlValue& budget) {
 StrategyConfig read_strategy(const YamlValue& node) {
   node.require_keys_within({"kind", "mu", "lambda", "kappa", "rho", "object_recombination",
                             "step_recombination", "initial_step", "sigma", "population", "restarts",
-                            "active", "negative_weights", "algorithm", "polish",
+                            "active", "negative_weights", "racing", "algorithm", "polish",
                             "polish_evaluations"});
   StrategyConfig s;
   s.kind = node.get_string("kind", s.kind);
@@ -59,6 +59,7 @@ StrategyConfig read_strategy(const YamlValue& node) {
   s.population = positive("population", 0);
   s.restarts = positive("restarts", static_cast<int>(s.restarts));
   s.active = node.get_bool("active", s.active);
+  s.racing = node.get_bool("racing", s.racing);
   if (const auto v = node.find("negative_weights")) {
     const std::string text = v->as_string();
     if (text != "ranked" && text != "pooled") v->fail("expected ranked or pooled");

@@ -65,6 +65,7 @@ nlohmann::ordered_json strategy_to_json(const StrategyConfig& s) {
   // Written only when off, so the identity (and config hash) of every earlier run is unchanged.
   if (!s.active) out["active"] = false;
   if (s.pooled_negative_tail) out["negative_weights"] = "pooled";
+  if (!s.racing) out["racing"] = false;
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -98,14 +99,28 @@ TEST(EsDriverTest, ContextCarriesGenerationAndThreshold) {
   Budget budget;
   budget.max_generations = 6;
   run_optimisation(es, problem, evaluator, budget, callbacks);
-  ASSERT_EQ(problem.contexts.size(), 6u);
-  for (std::size_t g = 0; g < 6; ++g) {
-    EXPECT_EQ(problem.contexts[g].generation, g);
-    EXPECT_EQ(problem.contexts[g].first_individual, 0u);
+  // Generation 0 is the initial population, one batch; every later generation is raced in
+  // chunks of μ offspring, the first against the selection threshold, each later one against a
+  // bound that only tightens, indices contiguous.
+  std::size_t next = 0;
+  for (std::uint64_t g = 0; g < 6; ++g) {
+    ASSERT_LT(next, problem.contexts.size());
+    EXPECT_EQ(problem.contexts[next].generation, g);
+    EXPECT_EQ(problem.contexts[next].first_individual, 0u);
     if (g > 0) {
-      EXPECT_EQ(problem.contexts[g].stop_threshold, thresholds[g - 1]);
+      EXPECT_EQ(problem.contexts[next].stop_threshold, thresholds[g - 1]);
     }
+    std::uint64_t covered = small().mu;
+    double bound = problem.contexts[next].stop_threshold;
+    for (++next; next < problem.contexts.size() && problem.contexts[next].generation == g; ++next) {
+      EXPECT_EQ(problem.contexts[next].first_individual, covered);
+      EXPECT_LE(problem.contexts[next].stop_threshold, bound);
+      bound = problem.contexts[next].stop_threshold;
+      covered = std::min<std::uint64_t>(small().lambda, covered + small().mu);
+    }
+    EXPECT_EQ(covered, g == 0 ? small().mu : small().lambda) << "generation " << g;
   }
+  EXPECT_EQ(next, problem.contexts.size());
 }
 
 // A refit's incumbent (the model it extends) is evaluated once before the search: the run's best

@@ -60,6 +60,10 @@ struct MuPlusLambdaOptions {
   double tol_step_relative = 0.0;
   // Keys every random stream of the run.
   std::uint64_t seed = 1;
+  // Racing within a generation (below): each offspring is also judged against the offspring
+  // evaluated before it. Off: against the parents alone. Bit-identical either way; only the
+  // work differs, so it is not part of a checkpoint's identity.
+  bool racing = true;
 
   // True if the options are consistent; otherwise false and a one-line reason in *why.
   // (Whether start_point fits the bounds is checked by the MuPlusLambda constructor.)
@@ -86,6 +90,13 @@ struct Individual {
 // will compete in the next selection (+inf while fewer than μ can). An offspring whose fitness
 // is >= it lands behind μ parents and is never selected, and it cannot beat the best so far, so
 // any reported value >= the threshold leaves the run unchanged.
+// Racing within a generation: only the μ best of the pool are kept, so exact_ranks_needed() is
+// μ, and race_threshold() is the μ-th best of the competing parents together with the offspring
+// evaluated so far (earlier in the batch: they win ties, as the parents do). Each chunk of μ
+// offspring evaluated tightens the bound for the rest of the batch; on the (10+800)-ES the bound
+// soon sits at the best 10 of several hundred. The chunks are μ whatever the evaluator's width
+// (race_chunk), because the batch median in a fit's progress may be a stopped offspring's
+// partial value: so it, too, is the same for any number of threads or ranks.
 class MuPlusLambda final : public Strategy {
  public:
   // Throws std::invalid_argument for invalid options or a start point of the wrong size or
@@ -97,6 +108,9 @@ class MuPlusLambda final : public Strategy {
   void tell(const std::vector<double>& fitness) override;
   std::size_t next_batch_size() const override;
   double selection_threshold() const override;
+  std::size_t exact_ranks_needed() const override;
+  double race_threshold(const std::vector<double>& exact_sorted) const override;
+  std::size_t race_chunk(std::size_t) const override { return exact_ranks_needed(); }
   nlohmann::json save_state() const override;
   void load_state(const nlohmann::json& state) override;
 
@@ -113,6 +127,8 @@ class MuPlusLambda final : public Strategy {
   double clamp_step(double step, std::size_t coordinate) const;
   void select(const std::vector<double>& fitness);
   void check_stop_criteria();
+  // Fitness of the parents that will compete in the next selection (age below κ).
+  std::vector<double> competing_fitness() const;
   nlohmann::json options_fingerprint() const;
 
   MuPlusLambdaOptions options_;

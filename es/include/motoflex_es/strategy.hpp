@@ -70,6 +70,19 @@ class Strategy {
   // The driver then evaluates that many first and the rest against their worst value (see
   // run_optimisation), which changes nothing but the work done. Default: the whole batch.
   virtual std::size_t exact_ranks_needed() const { return next_batch_size(); }
+  // Racing within the batch: the threshold for the batch's remaining individuals once
+  // `exact_sorted` is known, the ranked values (ascending) of this batch's individuals evaluated
+  // exactly so far, all of lower index than the ones still to come. An individual whose
+  // fitness is >= the returned value has no influence on the run. Default: just above the
+  // exact_ranks_needed()-th of them (ties evaluated in full), or selection_threshold() if lower;
+  // +inf while neither applies.
+  virtual double race_threshold(const std::vector<double>& exact_sorted) const;
+  // Racing: after the first exact_ranks_needed() individuals, the batch is evaluated in chunks of
+  // this many, each against the race_threshold of the values known before it. Default: the
+  // evaluator's width (`workers`), the most parallel; a strategy that reports a statistic a
+  // stopped individual can enter (a batch median beyond its exact ranks) returns a size that
+  // does not depend on `workers`, so that the statistic is the same for any number of threads.
+  virtual std::size_t race_chunk(std::size_t workers) const { return workers; }
 
   // Complete state as JSON: population (with step sizes and ages) or distribution, seed and
   // generation (which key every random stream), best so far, evaluation counts, stop state.

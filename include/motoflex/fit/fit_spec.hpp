@@ -70,6 +70,10 @@ struct StrategyConfig {
   // `negative_weights: pooled` (default `ranked`): the active update's worse ranks, from
   // max(μ, ⌊λ/2⌋+1) on, share one negative weight, so the driver can race them too.
   bool pooled_negative_tail = false;
+  // mu_plus_lambda and cma_es: racing within a generation (each individual also judged against
+  // the ones evaluated before it). Off: only against the threshold from before the generation,
+  // to measure what racing saves; the fit is bit-identical either way.
+  bool racing = true;
   // nlopt: bobyqa | sbplx | crs2_lm | isres | esch
   std::string algorithm = "bobyqa";
   // optional local polish of the best point after the main strategy (nlopt local algorithm)
