@@ -110,9 +110,10 @@ def against_mujoco(binary, repeats, out):
     }
 
 
-def fitness_at(binary, out, threads, point, name):
-    """F at `point` (values of nao_paper's free parameters): one evaluation (the free set is the
-    ideal servo's torque limit, which the motoflex law never reads; the point is `fixed:`)."""
+def summary_at(binary, out, threads, point, name):
+    """summary.json of one evaluation of nao_paper at `point` (values of its free parameters;
+    the free set is the ideal servo's torque limit, which the motoflex law never reads; the point
+    is `fixed:`)."""
     config = derived_config(FIT, {"kind": "nlopt", "algorithm": "sbplx"}, 1, threads, 1)
     config["free"] = {"ideal.torque_max_nm": {"lower": 1.0, "upper": 100.0, "start": 20.0}}
     config["fixed"] = {**(config.get("fixed") or {}), **point}
@@ -121,7 +122,12 @@ def fitness_at(binary, out, threads, point, name):
     run_dir = out / "runs" / name
     shutil.rmtree(run_dir, ignore_errors=True)  # a fit refuses a folder that holds one
     subprocess.run([binary, "fit", path, "--out", run_dir], check=True, stdout=subprocess.DEVNULL)
-    return json.loads((run_dir / "summary.json").read_text())["best_fitness"]
+    return json.loads((run_dir / "summary.json").read_text())
+
+
+def fitness_at(binary, out, threads, point, name):
+    """F at `point` (values of nao_paper's free parameters): one evaluation (summary_at)."""
+    return summary_at(binary, out, threads, point, name)["best_fitness"]
 
 
 def truth_fitness(binary, out, threads):
