@@ -218,6 +218,10 @@ std::size_t MuPlusLambda::exact_ranks_needed() const {
   return std::min(options_.mu, next_batch_size());
 }
 
+std::size_t MuPlusLambda::race_chunk(std::size_t) const {
+  return options_.race_chunk > 0 ? options_.race_chunk : exact_ranks_needed();
+}
+
 double MuPlusLambda::race_threshold(const std::vector<double>& exact_sorted) const {
   if (population_.empty()) return std::numeric_limits<double>::infinity();
   // An offspring at or above the μ-th best of this pool lands behind μ individuals that win

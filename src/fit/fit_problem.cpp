@@ -137,6 +137,7 @@ std::unique_ptr<motoflex_es::Strategy> make_strategy(const FitConfig& config) {
     options.start_point = config.space->start();
     options.seed = config.seed;
     options.racing = s.racing;
+    options.race_chunk = s.race_chunk;
     check_options(options.is_valid(&why), why, config.path);
     return std::make_unique<motoflex_es::MuPlusLambda>(bounds, options);
   }

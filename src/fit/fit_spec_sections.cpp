@@ -28,8 +28,8 @@ FitBudget read_budget(const YamlValue& budget) {
 StrategyConfig read_strategy(const YamlValue& node) {
   node.require_keys_within({"kind", "mu", "lambda", "kappa", "rho", "object_recombination",
                             "step_recombination", "initial_step", "sigma", "population", "restarts",
-                            "active", "negative_weights", "racing", "algorithm", "polish",
-                            "polish_evaluations"});
+                            "active", "negative_weights", "racing", "race_chunk", "algorithm",
+                            "polish", "polish_evaluations"});
   StrategyConfig s;
   s.kind = node.get_string("kind", s.kind);
   if (s.kind != "mu_plus_lambda" && s.kind != "cma_es" && s.kind != "nlopt") {
@@ -60,6 +60,7 @@ StrategyConfig read_strategy(const YamlValue& node) {
   s.restarts = positive("restarts", static_cast<int>(s.restarts));
   s.active = node.get_bool("active", s.active);
   s.racing = node.get_bool("racing", s.racing);
+  s.race_chunk = positive("race_chunk", 0);
   if (const auto v = node.find("negative_weights")) {
     const std::string text = v->as_string();
     if (text != "ranked" && text != "pooled") v->fail("expected ranked or pooled");

@@ -66,6 +66,7 @@ nlohmann::ordered_json strategy_to_json(const StrategyConfig& s) {
   if (!s.active) out["active"] = false;
   if (s.pooled_negative_tail) out["negative_weights"] = "pooled";
   if (!s.racing) out["racing"] = false;
+  if (s.race_chunk > 0) out["race_chunk"] = s.race_chunk;
   return out;
 }
 

@@ -173,6 +173,28 @@ TEST(EsEarlyTerminationTest, CommaSelectionRacesWithinTheBatchAndCmaEsOffersNoTh
   EXPECT_EQ(early.steps, full.steps);  // the active update reads every rank: nothing is stopped
 }
 
+TEST(EsEarlyTerminationTest, TheRaceChunkChangesOnlyTheWork) {
+  // One offspring per chunk (the tightest bound), the default μ = 6, and one chunk for the whole
+  // rest of the generation: the same states, and the default saves more than the one big chunk.
+  const Bounds bounds = PartialErrorProblem(false, false).bounds();
+  SerialEvaluator serial;
+  MuPlusLambda full_es(bounds, small_es(3));
+  const Trace full = run(full_es, false, false, serial);
+  std::vector<std::uint64_t> steps;
+  for (std::size_t chunk : {std::size_t{1}, std::size_t{0}, std::size_t{80}}) {
+    MuPlusLambdaOptions options = small_es(3);
+    options.race_chunk = chunk;
+    MuPlusLambda es(bounds, options);
+    OpenMpEvaluator two(2);
+    const Trace raced = run(es, true, false, two);
+    EXPECT_EQ(raced.states, full.states) << "race_chunk " << chunk;
+    EXPECT_EQ(es.race_chunk(2), chunk == 0 ? 6u : chunk);
+    steps.push_back(raced.steps);
+  }
+  EXPECT_LT(steps[1], steps[2]);
+  EXPECT_LE(steps[0], steps[1]);
+}
+
 TEST(EsEarlyTerminationTest, PlusSelectionRacesAgainstParentsAndEarlierOffspringTogether) {
   const Bounds bounds = PartialErrorProblem(false, false).bounds();
   SerialEvaluator serial;

@@ -3,7 +3,8 @@
 // it. A pendulum fit gives the same generations and best.json with racing, with the parents'
 // threshold alone (`racing: false`) and with no early termination at all, bit for bit (all but
 // the batch median, a censored statistic), racing spares more frames than the parents'
-// threshold, and 1 and 2 threads race alike, median and frame counts included.
+// threshold, and 1 and 2 threads race alike, median and frame counts included; a chunk of 5
+// (`race_chunk`) changes the work only.
 
 #include <gtest/gtest.h>
 
@@ -22,14 +23,16 @@ namespace {
 namespace fs = std::filesystem;
 
 nlohmann::json run_fit(const fs::path& dir, const fs::path& data, bool early_termination,
-                       bool racing, int threads = 2) {
+                       bool racing, int threads = 2, int race_chunk = 0) {
   const std::string fitness = std::string("fitness: {m: 2, early_termination: ") +
                               (early_termination ? "true" : "false") +
                               "}\nthreads: " + std::to_string(threads) + "\n";
-  const std::string strategy = std::string(
-                                   "{kind: mu_plus_lambda, mu: 3, lambda: 12, kappa: 3, "
-                                   "initial_step: 0.2, racing: ") +
-                               (racing ? "true" : "false") + "}";
+  const std::string strategy =
+      std::string(
+          "{kind: mu_plus_lambda, mu: 3, lambda: 12, kappa: 3, "
+          "initial_step: 0.2, racing: ") +
+      (racing ? "true" : "false") +
+      (race_chunk > 0 ? ", race_chunk: " + std::to_string(race_chunk) : "") + "}";
   fs::create_directories(dir);
   FitOverrides overrides;
   overrides.out = (dir / "run").string();
@@ -67,7 +70,8 @@ TEST(FitMuPlusLambdaRacing, RacingWithinTheGenerationChangesNothingButTheWork) {
   EXPECT_EQ(generations_without_seconds(dir / "one" / "run"),
             generations_without_seconds(dir / "raced" / "run"));
   EXPECT_EQ(one["early_termination"], raced["early_termination"]);
-  for (const char* which : {"parents", "raced"}) {
+  run_fit(dir / "chunk5", dir / "data", true, true, 2, 5);
+  for (const char* which : {"parents", "raced", "chunk5"}) {
     EXPECT_EQ(generations_without_median(dir / which / "run"),
               generations_without_median(dir / "full" / "run"))
         << which;

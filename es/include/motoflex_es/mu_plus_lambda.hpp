@@ -64,6 +64,12 @@ struct MuPlusLambdaOptions {
   // evaluated before it. Off: against the parents alone. Bit-identical either way; only the
   // work differs, so it is not part of a checkpoint's identity.
   bool racing = true;
+  // Offspring per racing chunk after the first μ; 0 = μ. A chunk waits for its slowest rollout,
+  // so with more workers (threads × ranks) than μ set it to the number of workers: none then
+  // waits idle for want of work. The run's state does not depend on it; what stopped offspring
+  // report (the censored batch median) does, which is why it is the run's setting and not the
+  // evaluator's width.
+  std::size_t race_chunk = 0;
 
   // True if the options are consistent; otherwise false and a one-line reason in *why.
   // (Whether start_point fits the bounds is checked by the MuPlusLambda constructor.)
@@ -94,9 +100,9 @@ struct Individual {
 // μ, and race_threshold() is the μ-th best of the competing parents together with the offspring
 // evaluated so far (earlier in the batch: they win ties, as the parents do). Each chunk of μ
 // offspring evaluated tightens the bound for the rest of the batch; on the (10+800)-ES the bound
-// soon sits at the best 10 of several hundred. The chunks are μ whatever the evaluator's width
-// (race_chunk), because the batch median in a fit's progress may be a stopped offspring's
-// partial value: so it, too, is the same for any number of threads or ranks.
+// soon sits at the best 10 of several hundred. The chunks are μ (or options().race_chunk)
+// whatever the evaluator's width, because the batch median in a fit's progress may be a stopped
+// offspring's partial value: so it, too, is the same for any number of threads or ranks.
 class MuPlusLambda final : public Strategy {
  public:
   // Throws std::invalid_argument for invalid options or a start point of the wrong size or
@@ -110,7 +116,7 @@ class MuPlusLambda final : public Strategy {
   double selection_threshold() const override;
   std::size_t exact_ranks_needed() const override;
   double race_threshold(const std::vector<double>& exact_sorted) const override;
-  std::size_t race_chunk(std::size_t) const override { return exact_ranks_needed(); }
+  std::size_t race_chunk(std::size_t) const override;
   nlohmann::json save_state() const override;
   void load_state(const nlohmann::json& state) override;
 

@@ -74,6 +74,9 @@ struct StrategyConfig {
   // the ones evaluated before it). Off: only against the threshold from before the generation,
   // to measure what racing saves; the fit is bit-identical either way.
   bool racing = true;
+  // mu_plus_lambda: offspring per racing chunk after the first μ (0 = μ); set it to threads ×
+  // ranks when they outnumber μ, so that no worker waits for want of work.
+  std::size_t race_chunk = 0;
   // nlopt: bobyqa | sbplx | crs2_lm | isres | esch
   std::string algorithm = "bobyqa";
   // optional local polish of the best point after the main strategy (nlopt local algorithm)
