@@ -19,7 +19,7 @@ from report_files import write_report
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCH_EFFECTS = ["none", "encoder_offset", "sensor_delay", "stribeck", "load_friction",
-                 "resistance_drift"]
+                 "resistance_drift", "torque_saturation"]
 
 
 def run_loop(binary, fit, out, threads, data=None, validation=None):

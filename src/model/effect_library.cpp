@@ -33,6 +33,7 @@ const std::vector<Effect>& effect_library() {
       detail::backdrive_friction_effect(),
       detail::mounting_offset_effect(),
       detail::winding_heating_effect(),
+      detail::torque_saturation_effect(),
   };
   return library;
 }

@@ -86,6 +86,9 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   // no heating at R_th = 0; C a small servo's winding, about a gram of copper.
   add("motor.winding_k_per_w", 0.0, 0.0, 200.0);
   add("motor.winding_heat_j_per_k", 0.5, 0.01, 20.0);
+  // Appended: the motor's torque saturation k = 1/I_s (the effect torque_saturation;
+  // torque_saturation.hpp): linear at 0; 5 /A saturates at 0.2 A, below a small servo's stall.
+  add("motor.torque_saturation_per_a", 0.0, 0.0, 5.0);
   return specs;
 }
 
@@ -125,6 +128,7 @@ const DomainRule kDomainRules[] = {
     {"motor.current_limit_a", true, kPositive},
     {"motor.winding_k_per_w", true, kNonNegative},
     {"motor.winding_heat_j_per_k", true, kPositive},
+    {"motor.torque_saturation_per_a", true, kNonNegative},
     {"R_ohm", false, kPositive},
     {"L_h", false, kNonNegative},
     {"Kt_nm_per_a", false, kPositive},

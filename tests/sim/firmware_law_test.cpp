@@ -91,6 +91,19 @@ TEST(FirmwareLawTest, CurrentLimitCapsTheStallTorque) {
   EXPECT_NEAR(trace.torque_nm.front(), 0.6 * 0.8, 1e-12);  // K_t·I_max (unlimited: 1.71 N·m)
 }
 
+// The motor's torque saturation (motor.torque_saturation_per_a, torque_saturation.hpp) in both
+// firmware laws: the stall torque K_t·tanh(k·U·d/R)/k.
+TEST(FirmwareLawTest, TorqueSaturationLowersTheStallTorque) {
+  for (const char* law : {"dynamixel", "feetech"}) {
+    ParameterSet p = values(law, Motor{});
+    p.set("servo.hinge.pwm_limit", 0.8 * p.get("servo.hinge.pwm_full_scale"));
+    p.set("motor.torque_saturation_per_a", 0.5);
+    const double stall_a = 7.4 * 0.8 / 2.6;
+    const auto trace = far_goal(law, p, 0.01);
+    EXPECT_NEAR(trace.torque_nm.front(), 0.6 * std::tanh(0.5 * stall_a) / 0.5, 1e-12) << law;
+  }
+}
+
 // The winding's Joule heating (winding_heating.hpp) in the firmware laws: a stalled servo at a
 // held duty d heats its winding until ΔT·(1 + α·ΔT) = (U·d)²·R_th/R₀, and its torque falls to
 // N·K_t·U·d/(R₀·(1 + α·ΔT)). The arm is a flywheel (1e5 kg·m²) so that it stays still: its

@@ -96,6 +96,13 @@ TEST(ServoLawRegistryTest, FrictionAndArmatureEffectsApplyWhereTheLawsReadThem) 
   for (const char* law : {"velocity", "pd_torque", "motoflex", "ideal"}) {
     EXPECT_FALSE(applies("current_limit", law)) << law;
   }
+  // The motor's torque saturation: the H-bridge laws (bench, dynamixel, feetech).
+  for (const char* law : {"bench", "dynamixel", "feetech"}) {
+    EXPECT_TRUE(applies("torque_saturation", law)) << law;
+  }
+  for (const char* law : {"velocity", "pd_torque", "motoflex", "ideal"}) {
+    EXPECT_FALSE(applies("torque_saturation", law)) << law;
+  }
 }
 
 }  // namespace

@@ -46,5 +46,6 @@ Effect current_limit_effect();
 Effect backdrive_friction_effect();
 Effect mounting_offset_effect();
 Effect winding_heating_effect();
+Effect torque_saturation_effect();
 
 }  // namespace motoflex::detail

@@ -104,6 +104,8 @@ std::vector<std::string> firmware_law_parameter_names(const RobotModel& model,
   // this law as the bench law reads it.
   names.emplace_back("motor.winding_k_per_w");
   names.emplace_back("motor.winding_heat_j_per_k");
+  // The motor's torque saturation (the effect torque_saturation), shared the same way.
+  names.emplace_back("motor.torque_saturation_per_a");
   return names;
 }
 
@@ -136,6 +138,10 @@ std::unique_ptr<ServoLaw> create_firmware_law(const ServoLawSetup& setup) {
   p.friction = read_friction(setup.get, spec.name, FrictionTerms::kFamily);
   p.armature_kg_m2 = read_armature(setup.get, spec);
   p.winding = {setup.get("motor.winding_k_per_w"), setup.get("motor.winding_heat_j_per_k")};
+  p.motor.saturation_per_a = setup.get("motor.torque_saturation_per_a");
+  if (!(p.motor.saturation_per_a >= 0.0)) {
+    throw ModelError("motor.torque_saturation_per_a must not be negative");
+  }
   try {
     return std::make_unique<FirmwareServoLaw>(p, setup.dt_s);
   } catch (const std::invalid_argument& error) {

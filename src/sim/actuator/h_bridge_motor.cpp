@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "motoflex/sim/actuator/torque_saturation.hpp"
+
 namespace motoflex {
 
 HBridgeMotorOutput h_bridge_motor(const HBridgeMotorParams& params, double duty,
@@ -17,7 +19,8 @@ HBridgeMotorOutput h_bridge_motor(const HBridgeMotorParams& params, double duty,
   }
   HBridgeMotorOutput out;
   out.current_a = (params.supply_v * duty - back_emf_v) / params.resistance_ohm;
-  out.torque_nm = params.gear_ratio * kt * out.current_a;
+  out.torque_nm =
+      params.gear_ratio * kt * saturated_current_a(out.current_a, params.saturation_per_a);
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/model/joint_units.hpp"
 #include "motoflex/sim/actuator/friction_family.hpp"
+#include "motoflex/sim/actuator/torque_saturation.hpp"
 
 namespace motoflex {
 
@@ -39,8 +40,11 @@ double bench_servo_torque_nm(const BenchServoParams& params, double commanded_ra
   const double current_a = (voltage_v - kt * velocity_rad_s) / params.resistance_ohm;
   // The driver's current limit: at I_max the torque no longer follows the duty.
   if (std::abs(current_a) > params.current_limit_a) {
-    return kt * std::copysign(params.current_limit_a, current_a);
+    return kt * saturated_current_a(std::copysign(params.current_limit_a, current_a),
+                                    params.saturation_per_a);
   }
+  if (params.saturation_per_a > 0.0)
+    return kt * saturated_current_a(current_a, params.saturation_per_a);
   return kt * voltage_v / params.resistance_ohm - kt * kt * velocity_rad_s / params.resistance_ohm;
 }
 

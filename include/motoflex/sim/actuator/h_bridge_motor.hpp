@@ -6,6 +6,8 @@
 // τ = K_t·U/R − K_t²·θ̇/R). The inductance is neglected (L/R ≈ 50 µs ≪ 1 ms). The firmware's
 // optional current limit I_max restricts the duty to the window where |I| ≤ I_max:
 //   duty ∈ [(K_t·N·θ̇ − R·I_max)/U_s, (K_t·N·θ̇ + R·I_max)/U_s]   (BAM HEAD's max_current).
+// With a torque saturation k > 0 the torque is N·K_t·tanh(k·I)/k (torque_saturation.hpp); the
+// output's current stays the winding's I.
 
 namespace motoflex {
 
@@ -15,11 +17,12 @@ struct HBridgeMotorParams {
   double resistance_ohm = 2.6;            // R
   double gear_ratio = 1.0;                // N: motor turns per joint turn
   double current_limit_a = 0.0;           // I_max; 0 = no limit
+  double saturation_per_a = 0.0;          // k = 1/I_s of torque_saturation.hpp; 0 = linear
 };
 
 struct HBridgeMotorOutput {
   double torque_nm = 0.0;  // on the joint
-  double current_a = 0.0;  // through the windings
+  double current_a = 0.0;  // through the windings (before any torque saturation)
 };
 
 // Throws nothing; R must be > 0 (the laws check it when they read it).

@@ -42,6 +42,9 @@ struct BenchServoParams {
   // The driver's current limit I_max: the winding current (U − K_t·θ̇)/R is clamped to ±I_max
   // (motor.current_limit_a; the default 1e3 A never binds on a servo).
   double current_limit_a = 1.0e3;
+  // The motor's torque saturation k = 1/I_s (motor.torque_saturation_per_a,
+  // torque_saturation.hpp): τ = K_t·tanh(k·I)/k after the current limit; 0 = linear.
+  double saturation_per_a = 0.0;
 };
 double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
                              double measured_rad, double velocity_rad_s, bool torque_enabled);
