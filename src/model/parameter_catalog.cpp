@@ -9,6 +9,24 @@
 
 namespace motoflex::detail {
 
+namespace {
+
+// The robot-wide motor effects appended last (after every per-joint block above them).
+void append_motor_effect_specs(std::vector<ParameterSpec>& specs) {
+  auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
+    specs.push_back({name, unit_from_parameter_name(name), neutral, lower, upper});
+  };
+  // The winding's Joule heating (the effect winding_heating; winding_heating.hpp): no heating at
+  // R_th = 0; C a small servo's winding, about a gram of copper.
+  add("motor.winding_k_per_w", 0.0, 0.0, 200.0);
+  add("motor.winding_heat_j_per_k", 0.5, 0.01, 20.0);
+  // The motor's torque saturation k = 1/I_s (the effect torque_saturation;
+  // torque_saturation.hpp): linear at 0; 5 /A saturates at 0.2 A, below a small servo's stall.
+  add("motor.torque_saturation_per_a", 0.0, 0.0, 5.0);
+}
+
+}  // namespace
+
 std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   std::vector<ParameterSpec> specs;
   auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
@@ -82,13 +100,7 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   for (const auto& a : model.actuators) {
     add(joint_parameter(a, "mounting_offset", joint_units(a).position), 0.0, -0.1, 0.1);
   }
-  // Appended: the winding's Joule heating (the effect winding_heating; winding_heating.hpp):
-  // no heating at R_th = 0; C a small servo's winding, about a gram of copper.
-  add("motor.winding_k_per_w", 0.0, 0.0, 200.0);
-  add("motor.winding_heat_j_per_k", 0.5, 0.01, 20.0);
-  // Appended: the motor's torque saturation k = 1/I_s (the effect torque_saturation;
-  // torque_saturation.hpp): linear at 0; 5 /A saturates at 0.2 A, below a small servo's stall.
-  add("motor.torque_saturation_per_a", 0.0, 0.0, 5.0);
+  append_motor_effect_specs(specs);
   return specs;
 }
 

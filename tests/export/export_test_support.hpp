@@ -52,7 +52,8 @@ inline std::map<std::string, double> fitted_values(const RobotModel& model) {
         s.name.rfind("motor.R_drift", 0) == 0 || s.name.rfind("motor.supply_sag", 0) == 0 ||
         s.name.find(".term_") != std::string::npos || s.name.find("cogging") != std::string::npos ||
         s.name.find("drag_") != std::string::npos ||
-        s.name.find("load_saturation") != std::string::npos) {
+        s.name.find("load_saturation") != std::string::npos ||
+        s.name.find("torque_saturation") != std::string::npos) {
       value = s.default_value;  // effects the exports drop: keep them neutral
     }
     out[s.name] = std::min(std::max(value, s.lower), s.upper);

@@ -12,6 +12,8 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
   const double supply_v = get("bench.supply_v");
   const double volts_to_torque = kt / resistance_ohm;
   a.kp_nm_per_rad = volts_to_torque * supply_v * get("bench.error_gain") * get("bench.kp");
+  // Dropped (no MuJoCo counterpart): the current limit, the torque saturation, the winding's
+  // heating and the load-dependent friction terms.
   a.effort_nm = volts_to_torque * supply_v * get("bench.max_duty");
   const std::string joint = "joint." + input.model.actuators[actuator].name + ".";
   // BAM eq. 13's back-EMF term K_t²/R is joint damping (outside the force limit).

@@ -14,7 +14,7 @@ namespace {
 //   ms·ticks_per_rad/full, effort = g·U_s·pwm_limit/full,  damping = joint viscous + N²·K_t²/R
 //   (back-EMF, outside the
 // force limit as in BAM and the bench export). Dropped: the I term, integer ticks, the dead band,
-// the current limit, the load-dependent friction terms.
+// the current limit, the torque saturation, the load-dependent friction terms.
 void fill(const ExportInput& input, std::size_t actuator, const ParameterReader& get,
           ActuatorExport& a) {
   const ActuatorSpec& spec = input.model.actuators[actuator];
