@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <string>
 
+#include "bench_stall_support.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/model/parameters.hpp"
 #include "motoflex/model/robot_loader.hpp"
@@ -24,8 +25,6 @@
 
 namespace motoflex {
 namespace {
-
-constexpr double kGravityForTest_m_s2 = 9.81;  // the rollout's world gravity
 
 TEST(TorqueSaturationTest, LinearAtZeroTanhShapedAboveAndInvertible) {
   for (const double current_a : {-3.0, -0.2, 0.0, 1.0e-9, 0.7, 2.5}) {
@@ -52,42 +51,19 @@ TEST(TorqueSaturationTest, LinearAtZeroTanhShapedAboveAndInvertible) {
   }
 }
 
-// The bench arm held at a goal it cannot reach (the duty saturated) for `hold_s`.
-RolloutResult hold(const RobotModel& bench, const ParameterSet& v, double goal_rad, double hold_s) {
-  const CommandTrajectory command =
-      keyframe_trajectory({{0.0, {goal_rad}}, {hold_s, {goal_rad}}}, 100.0);
-  RolloutOptions options;
-  options.servo = "bench";
-  return run_rollout(bench, v, command, options);
-}
-
-double held_angle(const RobotModel& bench, const ParameterSet& v, double goal_rad, double hold_s) {
-  const RolloutResult r = hold(bench, v, goal_rad, hold_s);
-  EXPECT_EQ(r.end, RolloutEnd::kCompleted) << r.end_detail;
-  return r.measured_rad.empty() ? std::nan("") : r.measured_rad.back();
-}
-
 TEST(TorqueSaturationTest, ABenchArmAtFullDutyHoldsWhereTheSaturatedStallTorqueMeetsGravity) {
-  const RobotModel bench = load_robot_model(
-      std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/robots/servo_pendulum", StructureOptions{});
-  ParameterSet v(bench.parameters);
+  const RobotModel bench = testing::load_servo_pendulum();
+  ParameterSet v = testing::stall_bench_values(bench);
   EXPECT_EQ(v.get("motor.torque_saturation_per_a"), 0.0);  // linear by default
-  v.set("bench.logged_supply", 0.0);
-  v.set("bench.supply_v", 7.4);
-  v.set("bench.kp", 2000.0);  // duty 5.75 per rad of error: saturated well short of the goal
-  v.set("bench.Kt_nm_per_a", 0.15);
-  v.set("bench.R_ohm", 3.0);
-  v.set("joint.pendulum.friction_nm", 0.0);
-  v.set("joint.pendulum.viscous_nm_s_per_rad", 0.05);
-  const double goal_rad = 1.5;
-  const double mgl_nm = v.get("bench.mass_kg") * kGravityForTest_m_s2 * v.get("bench.length_m");
+  const double goal_rad = testing::kBenchStallGoal_rad;
+  const double mgl_nm = testing::bench_gravity_torque_nm(v);
   const double stall_a = v.get("bench.supply_v") / v.get("bench.R_ohm");  // 2.47 A at rest
   const double kt = v.get("bench.Kt_nm_per_a");
 
-  const double linear_rad = held_angle(bench, v, goal_rad, 60.0);
+  const double linear_rad = testing::held_angle(bench, v, goal_rad, 60.0);
   const double k_per_a = 0.6;  // I_s = 1.67 A: the stall torque falls to 61 % of the linear one
   v.set("motor.torque_saturation_per_a", k_per_a);
-  const double saturated_rad = held_angle(bench, v, goal_rad, 60.0);
+  const double saturated_rad = testing::held_angle(bench, v, goal_rad, 60.0);
   const double linear_expected_rad = std::asin(kt * stall_a / mgl_nm);
   const double saturated_expected_rad =
       std::asin(kt * std::tanh(k_per_a * stall_a) / k_per_a / mgl_nm);
@@ -99,7 +75,7 @@ TEST(TorqueSaturationTest, ABenchArmAtFullDutyHoldsWhereTheSaturatedStallTorqueM
   EXPECT_LT(saturated_rad, linear_rad - 0.2);
 
   v.set("motor.torque_saturation_per_a", -0.1);
-  const RolloutResult rejected = hold(bench, v, goal_rad, 0.1);
+  const RolloutResult rejected = testing::hold_bench(bench, v, goal_rad, 0.1);
   EXPECT_NE(rejected.end, RolloutEnd::kCompleted);
   EXPECT_NE(rejected.end_detail.find("motor.torque_saturation_per_a"), std::string::npos)
       << rejected.end_detail;

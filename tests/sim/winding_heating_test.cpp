@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <string>
 
+#include "bench_stall_support.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/model/parameters.hpp"
 #include "motoflex/model/robot_loader.hpp"
@@ -56,43 +57,22 @@ TEST(WindingHeatingTest, NoThermalResistanceIsNoHeatingAndBadValuesAreRejected) 
   EXPECT_THROW(WindingTemperature({10.0, 0.5}, 0.0), ModelError);
 }
 
-constexpr double kGravity_m_s2 = 9.81;  // the rollout's world gravity
-
-// The bench arm's angle after `hold_s` of a goal it cannot reach (the duty saturated).
-double held_angle(const RobotModel& bench, const ParameterSet& v, double goal_rad, double hold_s) {
-  const CommandTrajectory hold =
-      keyframe_trajectory({{0.0, {goal_rad}}, {hold_s, {goal_rad}}}, 100.0);
-  RolloutOptions options;
-  options.servo = "bench";
-  const RolloutResult r = run_rollout(bench, v, hold, options);
-  EXPECT_EQ(r.end, RolloutEnd::kCompleted) << r.end_detail;
-  return r.measured_rad.back();
-}
-
 TEST(WindingHeatingTest, ABenchArmAtFullDutySettlesWhereTheHotMotorsStallTorqueMeetsGravity) {
-  const RobotModel bench = load_robot_model(
-      std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/robots/servo_pendulum", StructureOptions{});
-  ParameterSet v(bench.parameters);
-  v.set("bench.logged_supply", 0.0);
-  v.set("bench.supply_v", 7.4);
-  v.set("bench.kp", 2000.0);  // duty 5.75 per rad of error: saturated 0.2 rad short of the goal
-  v.set("bench.Kt_nm_per_a", 0.15);
-  v.set("bench.R_ohm", 3.0);
-  v.set("joint.pendulum.friction_nm", 0.0);
-  v.set("joint.pendulum.viscous_nm_s_per_rad", 0.05);
-  const double goal_rad = 1.5;
-  const double mgl_nm = v.get("bench.mass_kg") * kGravity_m_s2 * v.get("bench.length_m");
+  const RobotModel bench = testing::load_servo_pendulum();
+  ParameterSet v = testing::stall_bench_values(bench);
+  const double goal_rad = testing::kBenchStallGoal_rad;
+  const double mgl_nm = testing::bench_gravity_torque_nm(v);
   const double supply_v = v.get("bench.supply_v");
   const double kt = v.get("bench.Kt_nm_per_a");
   const double r0_ohm = v.get("bench.R_ohm");
 
-  const double cold_rad = held_angle(bench, v, goal_rad, 60.0);
+  const double cold_rad = testing::held_angle(bench, v, goal_rad, 60.0);
   const double cold_expected_rad = std::asin(kt * supply_v / r0_ohm / mgl_nm);
 
   const double r_th_k_per_w = 20.0;
   v.set("motor.winding_k_per_w", r_th_k_per_w);
   v.set("motor.winding_heat_j_per_k", 0.25);  // τ = 5 s: 60 s is 12 time constants
-  const double hot_rad = held_angle(bench, v, goal_rad, 60.0);
+  const double hot_rad = testing::held_angle(bench, v, goal_rad, 60.0);
   const double a = kCopperResistancePerK;
   const double heat_k = supply_v * supply_v * r_th_k_per_w / r0_ohm;
   const double rise_k = (std::sqrt(1.0 + 4.0 * a * heat_k) - 1.0) / (2.0 * a);
