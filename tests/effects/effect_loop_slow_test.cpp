@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-#include <nlohmann/json.hpp>
 
 #include "cli/cli_test_support.hpp"
 #include "effect_test_support.hpp"
