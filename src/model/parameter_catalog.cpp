@@ -11,10 +11,15 @@ namespace motoflex::detail {
 
 namespace {
 
+void add_spec(std::vector<ParameterSpec>& specs, const std::string& name, double neutral,
+              double lower, double upper) {
+  specs.push_back({name, unit_from_parameter_name(name), neutral, lower, upper});
+}
+
 // The robot-wide motor effects appended last (after every per-joint block above them).
 void append_motor_effect_specs(std::vector<ParameterSpec>& specs) {
-  auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
-    specs.push_back({name, unit_from_parameter_name(name), neutral, lower, upper});
+  const auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
+    add_spec(specs, name, neutral, lower, upper);
   };
   // The winding's Joule heating (the effect winding_heating; winding_heating.hpp): no heating at
   // R_th = 0; C a small servo's winding, about a gram of copper.
@@ -29,8 +34,8 @@ void append_motor_effect_specs(std::vector<ParameterSpec>& specs) {
 
 std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   std::vector<ParameterSpec> specs;
-  auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
-    specs.push_back({name, unit_from_parameter_name(name), neutral, lower, upper});
+  const auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
+    add_spec(specs, name, neutral, lower, upper);
   };
   for (const auto& a : model.actuators) {
     // A prismatic joint's names end in m and N (same numbers: these are neutral switches;

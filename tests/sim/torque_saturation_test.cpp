@@ -21,15 +21,15 @@
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/keyframe_motion.hpp"
 #include "motoflex/sim/actuator/h_bridge_motor.hpp"
+#include "motoflex/sim/actuator/servo_stages.hpp"
 #include "motoflex/sim/rollout.hpp"
 
 namespace motoflex {
 namespace {
 
-TEST(TorqueSaturationTest, LinearAtZeroTanhShapedAboveAndInvertible) {
+TEST(TorqueSaturationTest, LinearAtZeroTanhShapedAboveAndBounded) {
   for (const double current_a : {-3.0, -0.2, 0.0, 1.0e-9, 0.7, 2.5}) {
     EXPECT_EQ(saturated_current_a(current_a, 0.0), current_a);
-    EXPECT_EQ(winding_current_a(current_a, 0.0), current_a);
   }
   const double k_per_a = 0.8;  // I_s = 1.25 A
   const double is_a = 1.0 / k_per_a;
@@ -39,16 +39,40 @@ TEST(TorqueSaturationTest, LinearAtZeroTanhShapedAboveAndInvertible) {
   const double small_a = 1.0e-3;
   EXPECT_NEAR(saturated_current_a(small_a, k_per_a),
               small_a - k_per_a * k_per_a * small_a * small_a * small_a / 3.0, 1e-16);
-  // Bounded by I_s, monotone, and the winding current comes back from the torque.
+  // Bounded by I_s and monotone.
   double previous = -is_a;
   for (double current_a = -10.0; current_a <= 10.0; current_a += 0.25) {
     const double effective_a = saturated_current_a(current_a, k_per_a);
     EXPECT_LT(std::abs(effective_a), is_a);
     EXPECT_GT(effective_a, previous);
     previous = effective_a;
-    EXPECT_NEAR(winding_current_a(effective_a, k_per_a), current_a,
-                1e-9 * (1.0 + current_a * current_a));
   }
+}
+
+// The bench stage reports the winding's current, which heats it, beside the saturated torque:
+// the unsaturated (U − K_t·θ̇)/R, and I_max when the driver's limit binds.
+TEST(TorqueSaturationTest, TheBenchStageReportsTheWindingCurrentBeforeTheSaturation) {
+  BenchServoParams params;
+  params.kp = 400.0;
+  params.supply_v = 7.4;
+  params.torque_constant_nm_per_a = 0.3;
+  params.resistance_ohm = 2.6;
+  params.saturation_per_a = 0.8;
+  const double error_rad = 0.4;  // duty 0.46
+  const double rate_rad_s = 1.5;
+  const double duty = params.error_gain * params.kp * error_rad;
+  const double current_a = (params.supply_v * duty - 0.3 * rate_rad_s) / 2.6;
+  const BenchServoOutput out = bench_servo_output(params, error_rad, 0.0, rate_rad_s, true);
+  EXPECT_NEAR(out.current_a, current_a, 1e-15);
+  EXPECT_NEAR(out.torque_nm, 0.3 * std::tanh(0.8 * current_a) / 0.8, 1e-15);
+  EXPECT_EQ(bench_servo_torque_nm(params, error_rad, 0.0, rate_rad_s, true), out.torque_nm);
+  params.current_limit_a = 0.5;
+  const BenchServoOutput limited = bench_servo_output(params, error_rad, 0.0, rate_rad_s, true);
+  EXPECT_EQ(limited.current_a, 0.5);
+  EXPECT_NEAR(limited.torque_nm, 0.3 * std::tanh(0.4) / 0.8, 1e-15);
+  const BenchServoOutput released = bench_servo_output(params, error_rad, 0.0, rate_rad_s, false);
+  EXPECT_EQ(released.current_a, 0.0);
+  EXPECT_EQ(released.torque_nm, 0.0);
 }
 
 TEST(TorqueSaturationTest, ABenchArmAtFullDutyHoldsWhereTheSaturatedStallTorqueMeetsGravity) {

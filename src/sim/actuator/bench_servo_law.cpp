@@ -7,7 +7,6 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
-#include "motoflex/sim/actuator/torque_saturation.hpp"
 #include "motoflex/sim/actuator/winding_heating.hpp"
 
 namespace motoflex {
@@ -34,13 +33,11 @@ class BenchServoLaw final : public ServoLaw {
     const bool enabled = in.elapsed_s - in.settle_s < bench.torque_off_s;
     if (winding_.heats()) bench.resistance_ohm *= winding_.resistance_factor();
     ServoOutput out;
-    out.torque_nm =
-        bench_servo_torque_nm(bench, in.command_rad, in.angle_rad, in.rate_rad_s, enabled);
-    // The winding current I = τ/K_t, or its inverse through a torque saturation (none through a
-    // released bridge).
-    winding_.advance(
-        winding_current_a(out.torque_nm / bench.torque_constant_nm_per_a, bench.saturation_per_a),
-        bench.resistance_ohm);
+    const BenchServoOutput motor =
+        bench_servo_output(bench, in.command_rad, in.angle_rad, in.rate_rad_s, enabled);
+    out.torque_nm = motor.torque_nm;
+    // The winding heats with its current (none through a released bridge).
+    winding_.advance(motor.current_a, bench.resistance_ohm);
     out.row = joint_friction(friction_, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
     return out;
   }
@@ -92,10 +89,7 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   bench.torque_off_s = get("bench.torque_off_s");
   bench.current_limit_a = get("motor.current_limit_a");
   if (!(bench.current_limit_a > 0.0)) throw ModelError("motor.current_limit_a must be positive");
-  bench.saturation_per_a = get("motor.torque_saturation_per_a");
-  if (!(bench.saturation_per_a >= 0.0)) {
-    throw ModelError("motor.torque_saturation_per_a must not be negative");
-  }
+  bench.saturation_per_a = read_torque_saturation_per_a(get);
   if (!(bench.resistance_ohm > 0.0)) throw ModelError("bench.R_ohm must be positive");
   if (bench.max_duty < 0.0) throw ModelError("bench.max_duty must not be negative");
   const FrictionParams friction =

@@ -138,10 +138,7 @@ std::unique_ptr<ServoLaw> create_firmware_law(const ServoLawSetup& setup) {
   p.friction = read_friction(setup.get, spec.name, FrictionTerms::kFamily);
   p.armature_kg_m2 = read_armature(setup.get, spec);
   p.winding = {setup.get("motor.winding_k_per_w"), setup.get("motor.winding_heat_j_per_k")};
-  p.motor.saturation_per_a = setup.get("motor.torque_saturation_per_a");
-  if (!(p.motor.saturation_per_a >= 0.0)) {
-    throw ModelError("motor.torque_saturation_per_a must not be negative");
-  }
+  p.motor.saturation_per_a = read_torque_saturation_per_a(setup.get);
   try {
     return std::make_unique<FirmwareServoLaw>(p, setup.dt_s);
   } catch (const std::invalid_argument& error) {

@@ -24,11 +24,12 @@ MotorCommand ideal_servo(const IdealServoParams& params, double next_commanded_r
   return MotorCommand{(next_commanded_rad - measured_rad) / dt_s, params.torque_max_nm};
 }
 
-double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
-                             double measured_rad, double velocity_rad_s, bool torque_enabled) {
+BenchServoOutput bench_servo_output(const BenchServoParams& params, double commanded_rad,
+                                    double measured_rad, double velocity_rad_s,
+                                    bool torque_enabled) {
   // A released H-bridge leaves the windings open: no current, so neither drive nor back-EMF
   // braking.
-  if (!torque_enabled) return 0.0;
+  if (!torque_enabled) return {};
   // BAM eq. 12: the firmware's P law saturates at the PWM duty limit. min/max rather than
   // std::clamp, which is undefined for a (bad) negative max_duty.
   const double duty = std::min(
@@ -38,14 +39,35 @@ double bench_servo_torque_nm(const BenchServoParams& params, double commanded_ra
   // BAM eq. 13: current (U − K_t·θ̇)/R through the windings, torque K_t·I.
   const double kt = params.torque_constant_nm_per_a;
   const double current_a = (voltage_v - kt * velocity_rad_s) / params.resistance_ohm;
-  // The driver's current limit: at I_max the torque no longer follows the duty.
+  BenchServoOutput out;
   if (std::abs(current_a) > params.current_limit_a) {
-    return kt * saturated_current_a(std::copysign(params.current_limit_a, current_a),
-                                    params.saturation_per_a);
+    // The driver's current limit: at I_max the torque no longer follows the duty.
+    out.current_a = std::copysign(params.current_limit_a, current_a);
+    out.torque_nm = kt * saturated_current_a(out.current_a, params.saturation_per_a);
+  } else if (params.saturation_per_a > 0.0) {
+    out.current_a = current_a;
+    out.torque_nm = kt * saturated_current_a(current_a, params.saturation_per_a);
+  } else {
+    // The linear motor in BAM's form, and the current as τ/K_t, as the law always computed them.
+    out.torque_nm =
+        kt * voltage_v / params.resistance_ohm - kt * kt * velocity_rad_s / params.resistance_ohm;
+    out.current_a = out.torque_nm / kt;
   }
-  if (params.saturation_per_a > 0.0)
-    return kt * saturated_current_a(current_a, params.saturation_per_a);
-  return kt * voltage_v / params.resistance_ohm - kt * kt * velocity_rad_s / params.resistance_ohm;
+  return out;
+}
+
+double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
+                             double measured_rad, double velocity_rad_s, bool torque_enabled) {
+  return bench_servo_output(params, commanded_rad, measured_rad, velocity_rad_s, torque_enabled)
+      .torque_nm;
+}
+
+double read_torque_saturation_per_a(const ParameterReader& get) {
+  const double saturation_per_a = get("motor.torque_saturation_per_a");
+  if (!(saturation_per_a >= 0.0)) {
+    throw ModelError("motor.torque_saturation_per_a must not be negative");
+  }
+  return saturation_per_a;
 }
 
 std::string servo_parameter_prefix(const ActuatorSpec& actuator) {

@@ -46,8 +46,20 @@ struct BenchServoParams {
   // torque_saturation.hpp): τ = K_t·tanh(k·I)/k after the current limit; 0 = linear.
   double saturation_per_a = 0.0;
 };
+struct BenchServoOutput {
+  double torque_nm = 0.0;  // on the joint
+  double current_a = 0.0;  // through the winding (after the current limit, before saturation)
+};
+BenchServoOutput bench_servo_output(const BenchServoParams& params, double commanded_rad,
+                                    double measured_rad, double velocity_rad_s,
+                                    bool torque_enabled);
+// The torque alone.
 double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
                              double measured_rad, double velocity_rad_s, bool torque_enabled);
+
+// motor.torque_saturation_per_a (the effect torque_saturation, read by the bench and firmware
+// laws). Throws ModelError when negative.
+double read_torque_saturation_per_a(const ParameterReader& get);
 
 // "servo.<scope>." for a law's own per-joint or per-group parameters (ActuatorSpec::servo_scope;
 // the joint's name when the scope is empty).

@@ -19,11 +19,4 @@ inline double saturated_current_a(double current_a, double saturation_per_a) {
   return std::tanh(saturation_per_a * current_a) / saturation_per_a;
 }
 
-// The inverse: the winding current that produces a torque-producing current effective_a
-// (|k·effective_a| < 1, which saturated_current_a's output always satisfies).
-inline double winding_current_a(double effective_a, double saturation_per_a) {
-  if (!(saturation_per_a > 0.0)) return effective_a;
-  return std::atanh(saturation_per_a * effective_a) / saturation_per_a;
-}
-
 }  // namespace motoflex
