@@ -10,6 +10,8 @@
 #include <fstream>
 #include <string>
 
+#include "scratch_dir.hpp"
+
 namespace motoflex::testing {
 
 struct CommandResult {
@@ -24,7 +26,7 @@ inline CommandResult run_motoflex_with_timeout(const std::string& arguments, int
                                                const std::string& shell_setup = "") {
   // ctest runs tests in parallel processes: one stderr file per process and call.
   static int calls = 0;
-  const auto dir = std::filesystem::temp_directory_path() / "motoflex_cli_test";
+  const auto dir = scratch_root() / "cli_stderr";
   std::filesystem::create_directories(dir);
   const auto err =
       dir / ("stderr_" + std::to_string(getpid()) + "_" + std::to_string(++calls) + ".txt");
@@ -55,14 +57,9 @@ inline CommandResult run_motoflex(const std::string& arguments) {
   return run_motoflex_with_timeout(arguments, 0);
 }
 
-// A fresh, empty folder for one test. The process id keeps tests that ctest runs at the same
-// time (and test suites of other checkouts) out of each other's folders.
+// A fresh, empty folder for one test, under the process's scratch root (scratch_dir.hpp).
 inline std::filesystem::path fresh_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("motoflex_" + std::to_string(getpid()) + "_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return scratch_dir(name);
 }
 
 inline void write_text(const std::filesystem::path& path, const std::string& text) {

@@ -14,6 +14,7 @@
 
 #include "motoflex/export/export_input.hpp"
 #include "motoflex/model/robot_loader.hpp"
+#include "scratch_dir.hpp"
 
 namespace motoflex::testing {
 
@@ -28,13 +29,9 @@ inline std::shared_ptr<const RobotModel> load_robot(const std::string& robot,
   return std::make_shared<const RobotModel>(load_robot_model(robot_dir(robot), structure));
 }
 
-// A fresh folder per test and process (ctest runs tests in parallel processes).
+// A fresh folder per test, under the process's scratch root (scratch_dir.hpp).
 inline std::filesystem::path fresh_export_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("motoflex_export_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return scratch_dir("export_" + name);
 }
 
 // Fitted-looking values: the defaults scaled by a factor per parameter (within the bounds).
@@ -103,9 +100,8 @@ inline Fixture fitted_fixture(const std::string& robot, const std::string& servo
                               int flex_sub_bodies = 1) {
   Fixture f;
   f.model = load_robot(robot, flex_sub_bodies);
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("motoflex_export_" + robot + "_" + servo + "_" +
-                    std::to_string(flex_sub_bodies) + "_" + std::to_string(::getpid()));
+  const auto dir =
+      scratch_root() / ("export_" + robot + "_" + servo + "_" + std::to_string(flex_sub_bodies));
   const std::string best = write_best_json(dir, *f.model, fitted_values(*f.model));
   f.input = std::make_unique<ExportInput>(
       ExportInput{*f.model, ParameterSet(f.model->parameters), servo, {}, 0.001});

@@ -83,7 +83,7 @@ std::string write_fit(const fs::path& dir, const fs::path& data, const std::stri
 }
 
 TEST(FitLmPolishTest, LmRecoversTheTruthAndItsIntervalsCoverIt) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_polish";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_lm_polish");
   fs::remove_all(dir);
   // White encoder noise of 1 mrad (seeded) on the "measured" angles.
   record_pendulum_log(dir / "data", "noisy", {{"sensor.noise_rad", 1e-3}}, 5);
@@ -142,7 +142,7 @@ TEST(FitLmPolishTest, LmRecoversTheTruthAndItsIntervalsCoverIt) {
 // iteration costs more than p + 1 rollout sets (a Jacobian and the point itself; a rejected
 // step costs one), where central differences need up to 2p + 1.
 TEST(FitLmPolishTest, ForwardDifferencesRecoverTheTruthWithHalfTheRolloutsPerJacobian) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_forward";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_lm_forward");
   fs::remove_all(dir);
   record_pendulum_log(dir / "data", "noisy", {{"sensor.noise_rad", 1e-3}}, 5);
   std::map<std::string, nlohmann::json> polish;
@@ -186,7 +186,7 @@ TEST(FitLmPolishTest, ForwardDifferencesRecoverTheTruthWithHalfTheRolloutsPerJac
 // the console gets one line per iteration with a fitness that never rises, a cancel ends the
 // polish after the iteration in which it came, and a spent time budget leaves LM out.
 TEST(FitLmPolishTest, LmReportsEachIterationAndStopsWhenCancelled) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_progress";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_lm_progress");
   fs::remove_all(dir);
   record_pendulum_log(dir / "data", "noisy", {{"sensor.noise_rad", 1e-3}}, 5);
   const std::string polish = "polish: {method: lm, max_iterations: 30, covariance: false}\n";
@@ -245,7 +245,7 @@ TEST(FitLmPolishTest, LmReportsEachIterationAndStopsWhenCancelled) {
 }
 
 TEST(FitLmPolishTest, ThePolishSectionIsCheckedAndRoundTrips) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_spec";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_lm_spec");
   fs::remove_all(dir);
   fs::create_directories(dir);
   EXPECT_THROW(load_fit_spec(write_fit(dir, dir, "polish: {method: gauss}\n")), InputError);
@@ -284,7 +284,7 @@ TEST(FitLmPolishTest, ThePolishSectionIsCheckedAndRoundTrips) {
 // to the truth. The strategy is given almost no budget (16 evaluations at σ = 0.001), so the
 // start is what LM gets.
 TEST(FitLmPolishTest, AFlatScanFreesALockedFrictionThatLmAloneCannotMove) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_flat_scan";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_lm_flat_scan");
   fs::remove_all(dir);
   record_pendulum_log(dir / "data", "clean");
   const std::string locked = "lower: 0.001, upper: 50.0, log: true, start: 50.0";
@@ -321,7 +321,7 @@ TEST(FitLmPolishTest, AFlatScanFreesALockedFrictionThatLmAloneCannotMove) {
 }
 
 TEST(FitLmPolishTest, WithoutPolishTheSummaryHasNoIntervals) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_lm_nopolish";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_lm_nopolish");
   fs::remove_all(dir);
   record_pendulum_log(dir / "data", "clean");
   FitOverrides overrides;

@@ -39,7 +39,7 @@ std::uint64_t last_row_evaluations(const fs::path& run) {
 }
 
 TEST(FitStallTest, ARefitThatCannotBeatItsIncumbentStopsOneWindowAfterTheLastImprovement) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_stall";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_stall");
   fs::remove_all(dir);
   const std::string best = first_pendulum_fit(dir, 120).string();
   const double first_fitness = nlohmann::json::parse(read_text(best))["fitness"].get<double>();
@@ -95,7 +95,7 @@ TEST(FitStallTest, ARefitThatCannotBeatItsIncumbentStopsOneWindowAfterTheLastImp
 }
 
 TEST(FitStallTest, BadStallSettingsAreNamed) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_stall_bad";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_stall_bad");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string yaml = write_pendulum_fit(dir, dir, kWide, "{stall_relative: 1.5}");

@@ -30,7 +30,7 @@ FitSummary run_fit(const std::string& fit_yaml, const fs::path& out,
 }
 
 TEST(FitStartFromTest, AChainedFitStartsAtTheEarlierBestAndNeverEndsWorse) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_start_from";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_start_from");
   fs::remove_all(dir);
   first_pendulum_fit(dir, 40);
   const nlohmann::json first =
@@ -73,7 +73,7 @@ TEST(FitStartFromTest, AChainedFitStartsAtTheEarlierBestAndNeverEndsWorse) {
 }
 
 TEST(FitStartFromTest, HeldParametersComeFromParametersAndMissingOnesAreNamed) {
-  const fs::path dir = fs::temp_directory_path() / "motoflex_fit_start_from_files";
+  const fs::path dir = motoflex::testing::scratch_dir("fit_start_from_files");
   fs::remove_all(dir);
   record_pendulum_log(dir / "data", "clean");
   const std::string yaml =

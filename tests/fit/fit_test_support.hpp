@@ -17,6 +17,7 @@
 #include "motoflex/io/joint_log.hpp"
 #include "motoflex/scenario/scenario.hpp"
 #include "motoflex/sim/rollout_log.hpp"
+#include "scratch_dir.hpp"
 
 namespace motoflex::testing {
 

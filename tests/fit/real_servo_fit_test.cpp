@@ -22,7 +22,7 @@ TEST(RealServoFitTest, Sts3250ConfigFitsTheRealLogsWithIntervals) {
   const fs::path logs =
       fs::path(MOTOFLEX_SOURCE_DIR) / ".." / "shared" / "data" / "bam" / "sts3250" / "raw";
   if (!fs::is_directory(logs)) GTEST_SKIP() << "no BAM STS3250 logs at " << logs;
-  const fs::path dir = fs::temp_directory_path() / "motoflex_real_servo_fit";
+  const fs::path dir = motoflex::testing::scratch_dir("real_servo_fit");
   fs::remove_all(dir);
   FitOverrides overrides;
   overrides.data = logs.string();

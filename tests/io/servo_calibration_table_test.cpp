@@ -16,6 +16,7 @@
 #include <string>
 
 #include "motoflex/core/error.hpp"
+#include "scratch_dir.hpp"
 
 namespace motoflex {
 namespace {
@@ -25,8 +26,7 @@ namespace fs = std::filesystem;
 const fs::path kBamDataDir = fs::path(MOTOFLEX_SOURCE_DIR) / ".." / "shared" / "data" / "bam";
 
 std::string write_table(const std::string& name, const std::string& text) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("motoflex_calibration_" + std::to_string(::getpid()));
+  const fs::path dir = motoflex::testing::scratch_root() / "calibration";
   fs::create_directories(dir);
   const fs::path path = dir / name;
   std::ofstream(path) << text;
