@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <system_error>
 
@@ -35,6 +36,26 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
   std::filesystem::create_directories(dir);
   return dir;
 }
+
+// A test with a fresh folder of its own, dir_ (under the scratch root, named after the test),
+// and a writer for the files it reads back.
+class ScratchFolderTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = scratch_dir(std::string(info->test_suite_name()) + "." + info->name());
+  }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // Writes `text` byte for byte to dir_/name; returns the path.
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name), std::ios::binary) << text;
+    return path(name);
+  }
+
+  std::filesystem::path dir_;
+};
 
 // Removes the scratch root after the last test of the process, unless a test failed.
 class ScratchRootCleanup : public ::testing::Environment {

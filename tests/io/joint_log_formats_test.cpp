@@ -16,23 +16,15 @@
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
+#include "scratch_dir.hpp"
 
 namespace motoflex {
 namespace {
 
 namespace fs = std::filesystem;
 
-class JointLogFormatsTest : public ::testing::Test {
+class JointLogFormatsTest : public testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("motoflex_log_formats_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Writes NAME.csv and, when `sidecar` is not empty, NAME.yaml; returns the CSV path.
   std::string write(const std::string& name, const std::string& csv,
                     const std::string& sidecar = "") const {
@@ -43,8 +35,6 @@ class JointLogFormatsTest : public ::testing::Test {
   std::string sidecar_of(const std::string& name) const {
     return (dir_ / (name + ".yaml")).string();
   }
-
-  fs::path dir_;
 };
 
 // The InputError `action` throws, checked for its file, line and field.

@@ -13,31 +13,19 @@
 #include <limits>
 #include <stdexcept>
 
+#include "input_error_support.hpp"
 #include "motoflex/core/error.hpp"
+#include "scratch_dir.hpp"
 
 namespace motoflex {
 namespace {
 
 namespace fs = std::filesystem;
 
-class JointLogTest : public ::testing::Test {
+using testing::expect_input_error;
+
+class JointLogTest : public testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("motoflex_joint_log_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name), std::ios::binary) << text;
-    return path(name);
-  }
-
   std::vector<std::string> files_in_dir() const {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(dir_)) {
@@ -46,30 +34,7 @@ class JointLogTest : public ::testing::Test {
     std::sort(names.begin(), names.end());
     return names;
   }
-
-  fs::path dir_;
 };
-
-// Runs `action`, which must throw InputError at `line` for `field`; returns the message.
-std::string expect_input_error(const std::function<void()>& action, const std::string& file,
-                               int line, const std::string& field) {
-  try {
-    action();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), file) << e.what();
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_EQ(e.field(), field) << e.what();
-    std::string location = file;
-    if (line > 0) location += ":" + std::to_string(line);
-    location += ": ";
-    if (!field.empty()) location += field + ": ";
-    EXPECT_EQ(std::string(e.what()).rfind(location, 0), 0u) << e.what();
-    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
-    return e.message();
-  }
-  ADD_FAILURE() << "expected InputError at " << file << ":" << line << " " << field;
-  return "";
-}
 
 void expect_bit_identical(const std::vector<double>& expected, const std::vector<double>& actual) {
   ASSERT_EQ(expected.size(), actual.size());

@@ -7,52 +7,17 @@
 #include <fstream>
 #include <functional>
 
+#include "input_error_support.hpp"
 #include "motoflex/core/error.hpp"
+#include "scratch_dir.hpp"
 
 namespace motoflex {
 namespace {
 
 namespace fs = std::filesystem;
 
-class YamlReaderTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("motoflex_yaml_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-
-  fs::path dir_;
-};
-
-// Runs `action`, which must throw InputError at `line` for `field`; returns the message.
-std::string expect_input_error(const std::function<void()>& action, const std::string& file,
-                               int line, const std::string& field) {
-  try {
-    action();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_EQ(e.field(), field) << e.what();
-    EXPECT_EQ(e.file(), file) << e.what();
-    std::string location = file;
-    if (line > 0) location += ":" + std::to_string(line);
-    location += ": ";
-    if (!field.empty()) location += field + ": ";
-    EXPECT_EQ(std::string(e.what()).rfind(location, 0), 0u) << e.what();
-    return e.message();
-  }
-  ADD_FAILURE() << "expected InputError at " << file << ":" << line << " " << field;
-  return "";
-}
+using YamlReaderTest = testing::ScratchFolderTest;
+using testing::expect_input_error;
 
 constexpr const char* kConfig =
     "name: walk test\n"               // 1
