@@ -11,9 +11,10 @@
 
 namespace motoflex::testing {
 
-// Runs `action`, which must throw InputError at `line` for `field`; returns the message.
-inline std::string expect_input_error(const std::function<void()>& action, const std::string& file,
-                                      int line, const std::string& field) {
+// Runs `action`, which must throw InputError at `line` for `field`; returns the error.
+inline InputError expect_input_error_thrown(const std::function<void()>& action,
+                                            const std::string& file, int line,
+                                            const std::string& field) {
   try {
     action();
   } catch (const InputError& e) {
@@ -26,10 +27,16 @@ inline std::string expect_input_error(const std::function<void()>& action, const
     if (!field.empty()) location += field + ": ";
     EXPECT_EQ(std::string(e.what()).rfind(location, 0), 0u) << e.what();
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
-    return e.message();
+    return e;
   }
   ADD_FAILURE() << "expected InputError at " << file << ":" << line << " " << field;
-  return "";
+  return InputError("", 0, "", "");
+}
+
+// The same; returns the message without its location.
+inline std::string expect_input_error(const std::function<void()>& action, const std::string& file,
+                                      int line, const std::string& field) {
+  return expect_input_error_thrown(action, file, line, field).message();
 }
 
 }  // namespace motoflex::testing

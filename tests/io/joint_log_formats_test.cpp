@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "input_error_support.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
 #include "scratch_dir.hpp"
@@ -37,20 +38,7 @@ class JointLogFormatsTest : public testing::ScratchFolderTest {
   }
 };
 
-// The InputError `action` throws, checked for its file, line and field.
-InputError expect_error(const std::function<void()>& action, const std::string& file, int line,
-                        const std::string& field) {
-  try {
-    action();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), file) << e.what();
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_EQ(e.field(), field) << e.what();
-    return e;
-  }
-  ADD_FAILURE() << "expected an InputError at " << file << ":" << line << " " << field;
-  return InputError("", 0, "", "");
-}
+using testing::expect_input_error_thrown;
 
 const std::string kHeader = "robot: arm\nrate_hz: 100\n";
 
@@ -84,20 +72,20 @@ TEST_F(JointLogFormatsTest, ColumnsMapNamesTheFilesColumnsAndKeepsTheRest) {
                                 kHeader +
                                     "columns: {time_s: t, elbow.meas: pos_elbow, "
                                     "elbow.cmd: goal_elbow}\n");
-  expect_error([&] { read_joint_log(bad, {}); }, bad, 3, "goal_elbow");
+  expect_input_error_thrown([&] { read_joint_log(bad, {}); }, bad, 3, "goal_elbow");
 }
 
 TEST_F(JointLogFormatsTest, ColumnsMapErrorsPointAtTheSidecar) {
   // A mapped column the header lacks: the sidecar's line, under the mapped name.
   const std::string csv =
       write("missing", "t,a\n0,1\n1,2\n", kHeader + "columns:\n  time_s: t\n  elbow.cmd: goal\n");
-  const InputError e =
-      expect_error([&] { read_joint_log(csv, {}); }, sidecar_of("missing"), 5, "columns.elbow.cmd");
+  const InputError e = expect_input_error_thrown([&] { read_joint_log(csv, {}); },
+                                                 sidecar_of("missing"), 5, "columns.elbow.cmd");
   EXPECT_NE(std::string(e.what()).find("no column 'goal'"), std::string::npos) << e.what();
   // Without a mapping our time column comes first: the message says how to map another.
   const std::string unmapped = write("unmapped", "t,elbow.cmd\n0,1\n1,2\n");
   const InputError first =
-      expect_error([&] { read_joint_log(unmapped, {}); }, unmapped, 1, "time_s");
+      expect_input_error_thrown([&] { read_joint_log(unmapped, {}); }, unmapped, 1, "time_s");
   EXPECT_NE(std::string(first.what()).find("columns: {time_s: t}"), std::string::npos)
       << first.what();
   // A column mapped twice to one of ours cannot happen (keys are unique); a literal column of
@@ -132,7 +120,8 @@ TEST_F(JointLogFormatsTest, DegreesAreConvertedPerColumnGroup) {
 TEST_F(JointLogFormatsTest, UndeclaredDegreesAreAnErrorWithAHint) {
   // No sidecar at all: the knee reads 35 at line 3.
   const std::string bare = write("bare", "time_s,knee.cmd\n0,0.5\n0.01,35\n");
-  const InputError e = expect_error([&] { read_joint_log(bare, {}); }, bare, 3, "knee.cmd");
+  const InputError e =
+      expect_input_error_thrown([&] { read_joint_log(bare, {}); }, bare, 3, "knee.cmd");
   const std::string message = e.what();
   EXPECT_NE(message.find("looks like it is in degrees"), std::string::npos) << message;
   EXPECT_NE(message.find("units: deg"), std::string::npos) << message;
@@ -143,8 +132,8 @@ TEST_F(JointLogFormatsTest, UndeclaredDegreesAreAnErrorWithAHint) {
                                     kHeader + "units: {cmd: deg}\n");
   JointLogRequirements requirements;
   requirements.need_measured = true;
-  const InputError meas =
-      expect_error([&] { read_joint_log(partial, requirements); }, partial, 3, "knee.meas");
+  const InputError meas = expect_input_error_thrown([&] { read_joint_log(partial, requirements); },
+                                                    partial, 3, "knee.meas");
   EXPECT_NE(std::string(meas.what()).find("{meas: deg}"), std::string::npos) << meas.what();
   // Declared radians beyond 2π are accepted (a multi-turn joint).
   const std::string turns =
@@ -167,7 +156,8 @@ TEST_F(JointLogFormatsTest, TimeInMillisecondsMicrosecondsAndNanoseconds) {
   // Strict increase is checked after the conversion, and reported in seconds.
   const std::string back =
       write("back", "time_s,a.cmd\n5,0\n4,0\n", kHeader + "units: {time: ms}\n");
-  const InputError e = expect_error([&] { read_joint_log(back, {}); }, back, 3, "time_s");
+  const InputError e =
+      expect_input_error_thrown([&] { read_joint_log(back, {}); }, back, 3, "time_s");
   EXPECT_NE(std::string(e.what()).find("0.005 s"), std::string::npos) << e.what();
 }
 
