@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """How the XL330's torque follows its drive, read straight from the logs (issue 19): the arm's
 equation of motion J0·θ̈ + m·g·l·sin θ = τ_motor + τ_friction − J_a·θ̈ is regressed, by linear
-least squares over the moving, torque-on, unsaturated samples, on the drive the firmware
-logged (its Present PWM register as a duty, times the logged input_volts), the rate, its sign
-and the acceleration. No simulation: the motor's apparent K_t/R (N·m per volt of drive) comes
-out per kp block. A linear motor has one K_t/R whatever the gain; the regression also tries
-the motor's torque saturation (the effect torque_saturation, τ ∝ tanh(k·I)) through a concave
-drive term U·|U|, which a linear motor does not need.
+least squares over the moving, torque-on, unsaturated samples of the raw logs, on the drive the
+firmware logged (its Present PWM register as a signed duty, times the logged input_volts), the
+rate, its sign and the acceleration. No simulation: the motor's apparent K_t/R (N·m per volt of
+drive) comes out per kp block. A linear motor has one K_t/R whatever the gain; the regression
+also tries concave drive laws a linear motor does not need: a quadratic term in the drive
+U·|U|, one in the winding current's proxy (the effect torque_saturation acts on the current)
+and a power law of the duty.
 
 Usage: xl330_torque_regression.py [--results benchmarks/xl330_torque_regression]
 Writes RESULTS/xl330_torque_regression.md. Skips (exit 0) when ../shared/data/bam is absent.
@@ -24,35 +25,58 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 BAM = os.path.join(ROOT, "..", "shared", "data", "bam")
 GRAVITY_M_S2 = 9.80665
 PWM_FULL_SCALE = 885.0  # the XL330's PWM limit register at 100 % duty (bam.md)
-DT_S = 0.005  # the processed logs' sample period
-SMOOTH = 5  # samples in the moving averages of the differentiated signals (25 ms)
+SMOOTH = 5  # samples in the moving averages of the differentiated signals (about 27 ms)
+
+
+def signed_pwm(register):
+    """The Present PWM register as the recorder stored it, unsigned 16-bit, as a signed count."""
+    return register - 65536 if register > 32767 else register
 
 
 def load(path):
-    """One processed log as arrays; the rate and acceleration from the positions."""
+    """One raw log as arrays; the rate and acceleration from the positions and timestamps. The
+    raw logs, not the processed ones: their PWM register is exact, while the processed logs
+    interpolate the unsigned register across every sign change (../shared/data/bam/xl330)."""
     with open(path) as f:
         log = json.load(f)
     entries = log["entries"]
+    time_s = np.array([e["timestamp"] for e in entries])
     angle = np.array([e["position"] for e in entries])
     kernel = np.ones(SMOOTH) / SMOOTH
-    rate = np.convolve(np.gradient(angle, DT_S), kernel, "same")
-    acceleration = np.convolve(np.gradient(rate, DT_S), kernel, "same")
+    rate = np.convolve(np.gradient(angle, time_s), kernel, "same")
+    acceleration = np.convolve(np.gradient(rate, time_s), kernel, "same")
     return dict(kp=log["kp"], trajectory=log["trajectory"], mass=log["mass"], length=log["length"],
                 angle=angle, rate=rate, acceleration=acceleration,
-                duty=np.array([e["load"] for e in entries]) / PWM_FULL_SCALE,
+                duty=np.array([signed_pwm(e["load"]) for e in entries]) / PWM_FULL_SCALE,
                 supply=np.array([e["input_volts"] for e in entries]),
                 on=np.array([bool(e["torque_enable"]) for e in entries]))
 
 
-def columns(log, concave):
+def columns(log, drive):
+    """The regressors: `drive` (name -> list of drive columns from U and θ̇), then −θ̇, −sign θ̇,
+    −θ̈."""
     drive_v = log["supply"] * log["duty"]
-    out = [drive_v, -log["rate"], -np.sign(log["rate"]), -log["acceleration"]]
-    if concave:
-        out.append(drive_v * np.abs(drive_v))
-    return np.stack(out, 1)
+    return np.stack(DRIVES[drive](drive_v, log["rate"]) +
+                    [-log["rate"], -np.sign(log["rate"]), -log["acceleration"]], 1)
 
 
-def regress(logs, concave):
+def power_law(exponent):
+    return lambda u, rate: [np.sign(u) * np.abs(u) ** exponent]
+
+
+# Concave drive laws the logs are asked to choose between: a quadratic term in the drive, a
+# power law of the duty (U_s·|d|^γ), and a quadratic term in the winding current's proxy
+# U − K_t·θ̇ (the torque saturation, which acts on the current; K_t 0.3 N·m/A, the fits' range).
+DRIVES = {
+    "linear": lambda u, rate: [u],
+    "U·|U|": lambda u, rate: [u, u * np.abs(u)],
+    "I·|I|": lambda u, rate: [u, (u - 0.3 * rate) * np.abs(u - 0.3 * rate)],
+}
+for _gamma in (0.6, 0.7, 0.8, 0.9):
+    DRIVES["|U|^%.1f" % _gamma] = power_law(_gamma)
+
+
+def regress(logs, drive):
     xs, ys = [], []
     for log in logs:
         keep = log["on"] & (np.abs(log["rate"]) > 0.1) & (np.abs(log["duty"]) < 0.98)
@@ -61,7 +85,7 @@ def regress(logs, concave):
         inertia = log["mass"] * log["length"] ** 2
         y = inertia * log["acceleration"] + log["mass"] * GRAVITY_M_S2 * log["length"] * np.sin(
             log["angle"])
-        xs.append(columns(log, concave)[keep])
+        xs.append(columns(log, drive)[keep])
         ys.append(y[keep])
     x = np.concatenate(xs)
     y = np.concatenate(ys)
@@ -75,13 +99,13 @@ def main():
     parser.add_argument("--results", default=os.path.join(ROOT, "benchmarks",
                                                           "xl330_torque_regression"))
     args = parser.parse_args()
-    folder = os.path.join(BAM, "xl330", "processed")
+    folder = os.path.join(BAM, "xl330", "raw")
     if not os.path.isdir(folder):
         print("BAM logs absent (%s): nothing to regress" % folder)
         return 0
     logs = [load(p) for p in sorted(glob.glob(os.path.join(folder, "*.json")))]
     gains = sorted({log["kp"] for log in logs})
-    lines = ["XL330 processed logs (../shared/data/bam/xl330), every log we have, moving "
+    lines = ["XL330 raw logs (../shared/data/bam/xl330/raw, the PWM register read as signed), every log we have, moving "
              "(|θ̇| > 0.1 rad/s), torque on, duty below 98 %%; least squares of "
              "J0·θ̈ + m·g·l·sin θ on the logged drive U = input_volts·PWM/%g, −θ̇, −sign θ̇, "
              "−θ̈ (and U·|U|). `scripts/xl330_torque_regression.py`, %s." % (
@@ -91,10 +115,20 @@ def main():
              "|---|---|---|---|---|---|---|"]
     for name, chosen in [("every gain", logs)] + [
             ("kp %d" % kp, [log for log in logs if log["kp"] == kp]) for kp in gains]:
-        linear, linear_rms, _, samples = regress(chosen, False)
-        concave, concave_rms, _, _ = regress(chosen, True)
+        linear, linear_rms, _, samples = regress(chosen, "linear")
+        concave, concave_rms, _, _ = regress(chosen, "U·|U|")
         lines.append("| %s | %d | %.4f | %.4f | %.4f | %.5f | %.4f |" % (
-            name, samples, linear[0], linear_rms, concave[0], concave[4], concave_rms))
+            name, samples, linear[0], linear_rms, concave[0], concave[1], concave_rms))
+    lines += ["", "Which concave law: residual RMS (N·m) of each drive law, same samples and "
+              "other regressors. U·|U|: quadratic in the drive; |U|^γ: a power law of the duty; "
+              "I·|I|: quadratic in the current proxy U − 0.3·θ̇, as the torque saturation acts "
+              "on the current.", "",
+              "| drive law | every gain | kp 100 | kp 400 | kp 800 |", "|---|---|---|---|---|"]
+    for drive in DRIVES:
+        rms = [regress(chosen, drive)[1] for chosen in
+               [logs] + [[log for log in logs if log["kp"] == kp] for kp in gains]]
+        lines.append("| %s | %s |" % (drive.replace("|", "\\|"),
+                                      " | ".join("%.4f" % r for r in rms)))
     text = "\n".join(lines) + "\n"
     os.makedirs(args.results, exist_ok=True)
     with open(os.path.join(args.results, "xl330_torque_regression.md"), "w") as f:
