@@ -17,6 +17,7 @@
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/io/joint_log.hpp"
+#include "scratch_dir.hpp"
 
 namespace motoflex {
 namespace {
@@ -112,19 +113,8 @@ json small_log() {
   return doc;
 }
 
-class BamImportTest : public ::testing::Test {
+class BamImportTest : public testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("motoflex_bam_import_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
   std::string write(const std::string& name, const std::string& text) const {
     fs::create_directories((dir_ / name).parent_path());
     std::ofstream(path(name), std::ios::binary) << text;
@@ -149,8 +139,6 @@ class BamImportTest : public ::testing::Test {
     ADD_FAILURE() << "no InputError for field " << field;
     return "";
   }
-
-  fs::path dir_;
 };
 
 TEST_F(BamImportTest, EveryRealTrajectoryLogRoundTripsExactly) {

@@ -11,6 +11,7 @@
 #include "motoflex/motion/nao_kick.hpp"
 #include "motoflex/motion/nao_walk.hpp"
 #include "motoflex/scenario/scenario.hpp"
+#include "scratch_dir.hpp"
 
 namespace motoflex {
 namespace {
@@ -19,16 +20,8 @@ namespace fs = std::filesystem;
 
 const std::string kWalks = std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/walks/";
 
-class NaoScenarioTest : public ::testing::Test {
+class NaoScenarioTest : public testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("motoflex_nao_scenario_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string write(const std::string& motion) {
     const fs::path path = dir_ / "scenario.yaml";
     std::ofstream(path) << "robot: " << MOTOFLEX_SOURCE_DIR << "/scenarios/robots/nao\n"
@@ -36,8 +29,6 @@ class NaoScenarioTest : public ::testing::Test {
                         << motion;
     return path.string();
   }
-
-  fs::path dir_;
 };
 
 TEST_F(NaoScenarioTest, BundledWalksLoadAsPlanned) {

@@ -10,6 +10,7 @@
 #include "motoflex/core/error.hpp"
 #include "motoflex/motion/titan_gait.hpp"
 #include "motoflex/scenario/scenario.hpp"
+#include "scratch_dir.hpp"
 
 namespace motoflex {
 namespace {
@@ -18,16 +19,8 @@ namespace fs = std::filesystem;
 
 const std::string kScenarios = std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/titan/";
 
-class TitanScenarioTest : public ::testing::Test {
+class TitanScenarioTest : public testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("motoflex_titan_scenario_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string write(const std::string& servo, const std::string& motion) {
     const fs::path path = dir_ / "scenario.yaml";
     std::ofstream(path) << "robot: " << MOTOFLEX_SOURCE_DIR << "/scenarios/robots/titan8\n"
@@ -35,8 +28,6 @@ class TitanScenarioTest : public ::testing::Test {
                         << motion;
     return path.string();
   }
-
-  fs::path dir_;
 };
 
 TEST_F(TitanScenarioTest, BundledCrawlsLoadThePlannedGait) {
