@@ -4,8 +4,8 @@
 Usage: plot_log.py LOG.csv --out PNG [--compare OTHER.csv]
 """
 import argparse
-import csv
 import math
+import os
 import sys
 
 import matplotlib
@@ -13,16 +13,12 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from csv_columns import read_columns  # noqa: E402
+
 
 def read_log(path):
-    with open(path, newline="") as f:
-        rows = [r for r in csv.reader(line for line in f if not line.startswith("#") and line.strip())]
-    header = [h.strip() for h in rows[0]]
-    columns = {name: [] for name in header}
-    for row in rows[1:]:
-        for name, value in zip(header, row):
-            columns[name].append(float(value))
-    return header, columns
+    return read_columns(path)
 
 
 def main():

@@ -7,7 +7,6 @@ Usage: plot_residuals.py DIR   (DIR holds residuals.json and train_series.csv)
 Writes DIR/residual_time.png, residual_vs_velocity.png, residual_vs_torque.png,
 residual_lag.png and ranking.png.
 """
-import csv
 import json
 import math
 import os
@@ -18,17 +17,14 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from csv_columns import read_columns  # noqa: E402
+
 DEG = 180.0 / math.pi
 
 
 def read_series(path):
-    with open(path, newline="") as f:
-        reader = csv.reader(f)
-        header = next(reader)
-        columns = {name: [] for name in header}
-        for row in reader:
-            for name, value in zip(header, row):
-                columns[name].append(float(value))
+    header, columns = read_columns(path)
     # Every residual channel: the joints, then imu.roll and imu.pitch when the fit scores them.
     channels = [h[: -len(".residual_rad")] for h in header if h.endswith(".residual_rad")]
     return columns, channels

@@ -10,29 +10,25 @@ Shaded: the steady part of the walk over which speed_mm_s is measured; x: a fall
 Usage: plot_seed001.py DIR
 """
 import argparse
-import csv
 import json
 import math
 import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from csv_columns import read_columns  # noqa: E402
+
 SIGNAL = {"pitch": ("pitch_rad", "torso pitch [deg] (+: forward)"),
           "roll": ("roll_rad", "torso roll [deg] (+: right side down)")}
 
 
 def read_series(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header = rows[0]
-    columns = {name: [] for name in header}
-    for row in rows[1:]:
-        for name, value in zip(header, row):
-            columns[name].append(float(value))
-    return columns
+    return read_columns(path)[1]
 
 
 def label(variant, run):

@@ -8,7 +8,6 @@ LOG_STEM is the log's file stem in the fits' best/ folders (training logs) or be
 the measured angle is read from --measured, or from LOOP_DIR/imported/.../<LOG_STEM>.csv.
 """
 import argparse
-import csv
 import glob
 import json
 import os
@@ -19,12 +18,12 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from csv_columns import read_columns  # noqa: E402
+
 
 def read(path):
-    with open(path) as f:
-        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))]
-    head, body = rows[0], rows[1:]
-    return {h: [float(r[i]) for r in body] for i, h in enumerate(head)}
+    return read_columns(path)[1]
 
 
 def series(run_dir, stem):

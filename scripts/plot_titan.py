@@ -10,27 +10,23 @@ writes into DIR:
 Usage: plot_titan.py DIR [--leg FL]
 """
 import argparse
-import csv
 import json
 import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from csv_columns import read_columns  # noqa: E402
+
 LEGS = ["FL", "FR", "HL", "HR"]
 
 
 def read_csv(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header = rows[0]
-    columns = {name: [] for name in header}
-    for row in rows[1:]:
-        for name, value in zip(header, row):
-            columns[name].append(float(value))
-    return columns
+    return read_columns(path)[1]
 
 
 def fig5(out, data, result):

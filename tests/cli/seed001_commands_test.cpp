@@ -122,11 +122,15 @@ TEST(ExperimentSeed001, RunsAStudyFileAndRefusesAnUnknownOne) {
              "variants:\n  - {name: rigid, scenario: " +
                  kSource + "/scenarios/experiments/seed001/rigid.yaml}\n");
   const auto result = run_motoflex("experiment " + (dir / "study.yaml").string() + " --out " +
-                                   (dir / "out").string() + " --no-plots");
+                                   (dir / "out").string());
   ASSERT_EQ(result.exit_code, 0) << result.stderr_text;
-  const auto summary = nlohmann::json::parse(result.stdout_text);
+  const auto summary = nlohmann::json::parse(result.stdout_text);  // the plots print nothing
   EXPECT_EQ(summary["w"]["rigid"]["fell"], false);
   EXPECT_TRUE(fs::exists(dir / "out" / "seed001.json"));
+  // The Fig. 4-style roll plot (scripts/plot_seed001.py; matplotlib is a set-up dependency).
+  EXPECT_EQ(result.stderr_text.find("no plot"), std::string::npos) << result.stderr_text;
+  const fs::path png = dir / "out" / "fig4_roll_w.png";
+  EXPECT_GT(fs::exists(png) ? fs::file_size(png) : 0u, 1000u) << png;
   expect_one_line_error(run_motoflex("experiment seed999 --out " + (dir / "x").string()),
                         "seed999");
 }

@@ -36,7 +36,7 @@ TEST(TitanCli, AShortWholeStudyReproducesThePapersFindings) {
   const fs::path dir = fresh_dir("titan_cli");
   write_text(dir / "study.yaml", short_study());
   const CommandResult run = run_motoflex("titan " + (dir / "study.yaml").string() + " --out " +
-                                         (dir / "out").string() + " --threads 2 --no-plots");
+                                         (dir / "out").string() + " --threads 2");
   ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
   std::ifstream in(dir / "out" / "titan.json");
   const nlohmann::json study = nlohmann::json::parse(in);
@@ -64,6 +64,11 @@ TEST(TitanCli, AShortWholeStudyReproducesThePapersFindings) {
   // And the report and the per-figure series are written.
   for (const char* file : {"report.md", "static_knee.csv", "updown.csv", "crawl_A_FL_cycle.csv"}) {
     EXPECT_TRUE(fs::exists(dir / "out" / file)) << file;
+  }
+  // The figures (scripts/plot_titan.py; matplotlib is a set-up dependency): drawn, no warning.
+  EXPECT_EQ(run.stderr_text.find("no plot"), std::string::npos) << run.stderr_text;
+  for (const char* png : {"fig5_static_knee.png", "updown.png", "fig10_power.png"}) {
+    EXPECT_GT(fs::exists(dir / "out" / png) ? fs::file_size(dir / "out" / png) : 0u, 1000u) << png;
   }
 }
 
