@@ -40,11 +40,20 @@ std::vector<double> scaled(const std::vector<double>& rad) {
   return out;
 }
 
+// The commanded angle of `joint` in `log` (deg); empty when the log has no commands.
+std::vector<double> command_deg(const JointLog& log, std::size_t joint) {
+  if (!log.has_commanded()) return {};
+  std::vector<double> out(log.frames());
+  for (std::size_t f = 0; f < log.frames(); ++f) out[f] = log.commanded(f, joint) * kDegPerRad;
+  return out;
+}
+
+// `command_deg` (on the measured frames; empty: none) adds the frequency response.
 ChannelComparison compare_channel(const std::string& name, const std::vector<double>& measured_t,
                                   const std::vector<double>& measured_deg,
                                   const std::vector<double>& simulated_t,
-                                  const std::vector<double>& simulated_deg,
-                                  std::size_t max_points) {
+                                  const std::vector<double>& simulated_deg, std::size_t max_points,
+                                  const std::vector<double>& command_deg = {}) {
   ChannelComparison out;
   out.name = name;
   const std::size_t n = measured_t.size();
@@ -62,6 +71,9 @@ ChannelComparison compare_channel(const std::string& name, const std::vector<dou
     sum += residual[f] * residual[f];
     largest = std::max(largest, std::abs(residual[f]));
     ++count;
+  }
+  if (command_deg.size() == n) {
+    out.frequency = compare_frequency_responses(measured_t, command_deg, measured_deg, simulated);
   }
   out.rms_deg = count == 0 ? std::numeric_limits<double>::quiet_NaN() : std::sqrt(sum / count);
   out.max_abs_deg = count == 0 ? std::numeric_limits<double>::quiet_NaN() : largest;
@@ -124,9 +136,9 @@ LogComparison compare_logs(const JointLog& measured, const JointLog& simulated,
     for (std::size_t j = 0; j < simulated.joints(); ++j) {
       const auto m = measured.joint_index(simulated.joint_names[j]);
       if (!m) continue;
-      out.channels.push_back(compare_channel(simulated.joint_names[j], measured.time_s,
-                                             column_deg(measured, *m), simulated.time_s,
-                                             column_deg(simulated, j), max_points));
+      out.channels.push_back(compare_channel(
+          simulated.joint_names[j], measured.time_s, column_deg(measured, *m), simulated.time_s,
+          column_deg(simulated, j), max_points, command_deg(measured, *m)));
     }
   }
   if (!measured.imu_roll_rad.empty() && !simulated.imu_roll_rad.empty()) {
@@ -167,6 +179,7 @@ nlohmann::json log_comparison_json(const LogComparison& comparison) {
     }
     item["measured"] = numbers_json(channel.measured_deg);
     item["simulated"] = numbers_json(channel.simulated_deg);
+    if (channel.frequency) item["frequency"] = frequency_comparison_json(*channel.frequency);
     channels.push_back(std::move(item));
   }
   out["channels"] = std::move(channels);

@@ -7,6 +7,7 @@
 #include "motoflex/core/build_info.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/report/figure_data.hpp"
+#include "motoflex/report/frequency_response.hpp"
 #include "motoflex/report/html_text.hpp"
 #include "motoflex/report/page_assets.hpp"
 #include "motoflex/report/parameter_table.hpp"
@@ -75,6 +76,7 @@ std::string render_report(const RunRecord& record, const ReportOptions& options)
   data["logs"] = nlohmann::json::array();
   for (const auto& log : logs) data["logs"].push_back(log_comparison_json(log));
   data["correlation"] = correlation_json(uncertainty.correlation);
+  data["min_coherence"] = kMinCoherence;  // the frequency responses' threshold
 
   const std::string title = title_of(record);
   const std::string revision = source_revision();

@@ -89,17 +89,95 @@
     return {traces: traces, layout: layout};
   }
 
+  // Values where both coherences reach the threshold, gaps elsewhere.
+  function coherent(values, f, threshold) {
+    return values.map(function (v, i) {
+      var ok = f.measured.coherence[i] !== null && f.simulated.coherence[i] !== null &&
+               f.measured.coherence[i] >= threshold && f.simulated.coherence[i] >= threshold;
+      return ok ? v : null;
+    });
+  }
+
+  function bodeFigure(channel) {
+    var f = channel.frequency;
+    var c = data.min_coherence;
+    var traces = [
+      {x: f.f_hz, y: coherent(f.measured.gain_db, f, c), name: 'measured', mode: 'lines+markers',
+       line: {color: '#1d2330', width: 1.5}, marker: {size: 3}, xaxis: 'x', yaxis: 'y'},
+      {x: f.f_hz, y: coherent(f.simulated.gain_db, f, c), name: 'simulated (best)',
+       mode: 'lines+markers', line: {color: '#d0431b', width: 1.5, dash: 'dash'}, marker: {size: 3},
+       xaxis: 'x', yaxis: 'y'},
+      {x: f.f_hz, y: coherent(f.measured.phase_deg, f, c), showlegend: false, mode: 'lines+markers',
+       line: {color: '#1d2330', width: 1.5}, marker: {size: 3}, xaxis: 'x', yaxis: 'y2'},
+      {x: f.f_hz, y: coherent(f.simulated.phase_deg, f, c), showlegend: false,
+       mode: 'lines+markers', line: {color: '#d0431b', width: 1.5, dash: 'dash'}, marker: {size: 3},
+       xaxis: 'x', yaxis: 'y2'},
+      {x: f.f_hz, y: f.measured.coherence, name: 'coherence γ², measured', mode: 'lines',
+       line: {color: '#6b7890', width: 1}, xaxis: 'x', yaxis: 'y3'},
+      {x: f.f_hz, y: f.simulated.coherence, name: 'coherence γ², simulated', mode: 'lines',
+       line: {color: '#e08a1e', width: 1, dash: 'dot'}, xaxis: 'x', yaxis: 'y3'}
+    ];
+    var layout = {
+      margin: {l: 70, r: 20, t: 10, b: 45},
+      xaxis: {title: {text: 'frequency (Hz)'}, type: 'log', anchor: 'y3'},
+      yaxis: {domain: [0.56, 1], title: {text: 'gain (dB)'}},
+      yaxis2: {domain: [0.24, 0.5], title: {text: 'phase (deg)'}},
+      yaxis3: {domain: [0, 0.16], range: [0, 1.05], title: {text: 'γ²'}},
+      shapes: [{type: 'line', xref: 'paper', x0: 0, x1: 1, yref: 'y3', y0: c, y1: c,
+                line: {color: '#9aa3b2', width: 1, dash: 'dot'}}],
+      legend: {orientation: 'h', x: 0, y: 1.1},
+      hovermode: 'x unified'
+    };
+    return {traces: traces, layout: layout};
+  }
+
+  // The selected channel's frequency response, or why there is none.
+  function drawBode(index, channel) {
+    var id = 'log-' + index + '-bode';
+    var div = document.getElementById(id);
+    if (!div) return;
+    var why = null;
+    if (!channel.frequency) {
+      why = 'No frequency response for ' + channel.name +
+        ' (an IMU angle, a log without commands, or a command that does not move).';
+    } else if (!channel.frequency.coherent_points) {
+      why = 'No frequency response for ' + channel.name + ': nowhere do both coherences reach ' +
+        data.min_coherence + ' (the command does not excite the joint over a band, or the joint ' +
+        'does not follow it linearly: steps and holds give none, chirps and multisines do).';
+    }
+    Plotly.purge(div);
+    if (why) {
+      div.style.height = 'auto';
+      div.innerHTML = '';
+      var note = document.createElement('p');
+      note.className = 'note';
+      note.textContent = why;
+      div.appendChild(note);
+      return;
+    }
+    div.style.height = '';
+    div.innerHTML = '';
+    guard(id, function (target) {
+      var figure = bodeFigure(channel);
+      Plotly.react(target, figure.traces, figure.layout, config);
+    });
+  }
+
   function drawLog(index) {
     var log = data.logs[index];
     var select = document.getElementById('log-' + index + '-channel');
+    var selected = function () { return log.channels[select ? Number(select.value) : 0]; };
     var draw = function (div) {
-      var channel = log.channels[select ? Number(select.value) : 0];
-      var figure = logFigure(log, channel);
+      var figure = logFigure(log, selected());
       Plotly.react(div, figure.traces, figure.layout, config);
     };
     guard('log-' + index + '-plot', draw);
+    drawBode(index, selected());
     if (select) {
-      select.addEventListener('change', function () { guard('log-' + index + '-plot', draw); });
+      select.addEventListener('change', function () {
+        guard('log-' + index + '-plot', draw);
+        drawBode(index, selected());
+      });
     }
   }
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 
+#include "motoflex/report/frequency_response.hpp"
 #include "motoflex/report/html_text.hpp"
 #include "motoflex/report/markdown_html.hpp"
 
@@ -77,6 +78,18 @@ std::size_t worst_channel(const LogComparison& log) {
 
 double number_or_nan(const json& value) {
   return value.is_number() ? value.get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+// The frequency-response columns of a channel's row: "–" where there is none, "no coherent
+// frequency" where the log does not excite the joint enough.
+std::string frequency_cells(const ChannelComparison& channel) {
+  if (!channel.frequency) return "<td>–</td><td>–</td><td>–</td>";
+  const FrequencyComparison& f = *channel.frequency;
+  if (f.coherent_points == 0) return "<td colspan=\"3\" class=\"na\">no coherent frequency</td>";
+  return "<td class=\"num\">" + escape_html(format_number(f.gain_rms_db, 3)) +
+         "</td><td class=\"num\">" + escape_html(format_number(f.phase_rms_deg, 3)) +
+         "</td><td class=\"num\">" + escape_html(format_number(f.measured_peak_hz, 3)) + " / " +
+         escape_html(format_number(f.simulated_peak_hz, 3)) + "</td>";
 }
 
 }  // namespace
@@ -162,7 +175,13 @@ std::string logs_section_html(const std::vector<LogComparison>& logs, std::size_
   html +=
       "<p class=\"note\">The measured angle, the best parameters' simulated angle and the "
       "residual beneath (shared time axis: drag to zoom either). Each log opens on the joint "
-      "with the largest residual RMS; the selector holds the others (and the torso IMU).";
+      "with the largest residual RMS; the selector holds the others (and the torso IMU). Below "
+      "it, the joint's frequency response: the gain and phase of the measured and of the "
+      "simulated angle against the commanded one (Welch's H1 estimate, Hann-windowed segments "
+      "of a quarter of the log), drawn where both coherences reach " +
+      format_number(kMinCoherence, 2) +
+      ", i.e. where the log excites the joint and it follows linearly; a resonance or a damping "
+      "the model misses shows there as a shifted peak or a gain gap.";
   if (thinned) {
     html += " Logs longer than " + std::to_string(max_points) + " frames are thinned to at most " +
             std::to_string(max_points) +
@@ -191,14 +210,17 @@ std::string logs_section_html(const std::vector<LogComparison>& logs, std::size_
           "; the simulation ends at " + format_number(log.simulated_end_s, 4) + " s (dotted line)";
     }
     html += "</span></div>\n<div id=\"" + id + "-plot\" class=\"plot tall\"></div>\n";
+    html += "<div id=\"" + id + "-bode\" class=\"plot tall\"></div>\n";
     html +=
-        "<details><summary class=\"note\">residual per channel</summary><table "
-        "class=\"channels\"><thead><tr><th>channel</th><th>RMS (deg)</th><th>largest "
-        "|error| (deg)</th></tr></thead><tbody>";
+        "<details><summary class=\"note\">residual and frequency response per "
+        "channel</summary><table class=\"channels\"><thead><tr><th>channel</th><th>RMS "
+        "(deg)</th><th>largest |error| (deg)</th><th>gain error (dB RMS)</th><th>phase error "
+        "(deg RMS)</th><th>gain peak, measured / simulated (Hz)</th></tr></thead><tbody>";
     for (const auto& channel : log.channels) {
       html += "<tr><td>" + escape_html(channel.name) + "</td><td class=\"num\">" +
               escape_html(format_number(channel.rms_deg, 4)) + "</td><td class=\"num\">" +
-              escape_html(format_number(channel.max_abs_deg, 4)) + "</td></tr>";
+              escape_html(format_number(channel.max_abs_deg, 4)) + "</td>" +
+              frequency_cells(channel) + "</tr>";
     }
     html += "</tbody></table></details></div>\n";
   }

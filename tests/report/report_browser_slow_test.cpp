@@ -91,15 +91,15 @@ TEST(ReportBrowser, ARealFitsReportDrawsEveryFigureWithoutJavaScriptErrors) {
   const std::string messages = javascript_messages(read_text(dir / "dom.log"));
   EXPECT_TRUE(messages.empty()) << messages;
   EXPECT_NE(dom.output.find("data-figures-failed=\"0\""), std::string::npos);
-  // Convergence and the two logs (training and validation).
-  EXPECT_NE(dom.output.find("data-figures-drawn=\"3\""), std::string::npos)
+  // Convergence, the two logs (training and validation) and their joint's frequency response.
+  EXPECT_NE(dom.output.find("data-figures-drawn=\"5\""), std::string::npos)
       << dom.output.substr(0, 2000);
   std::size_t svgs = 0;
   for (std::size_t at = dom.output.find("main-svg"); at != std::string::npos;
        at = dom.output.find("main-svg", at + 1)) {
     ++svgs;
   }
-  EXPECT_GE(svgs, 3u);
+  EXPECT_GE(svgs, 5u);
   EXPECT_EQ(dom.output.find("class=\"plot-error\""), std::string::npos);
 
   // (b) A screenshot that is a picture: many colours, not one.

@@ -9,7 +9,10 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
 #include "motoflex/io/joint_log.hpp"
+#include "motoflex/report/frequency_response.hpp"
 
 namespace motoflex::report {
 
@@ -23,6 +26,10 @@ struct ChannelComparison {
   std::vector<std::size_t> frames;
   std::vector<double> measured_deg;   // at the drawn frames
   std::vector<double> simulated_deg;  // NaN where the simulation did not reach the frame
+  // A joint's response to its command, measured and simulated (frequency_response.hpp), over
+  // every frame both cover; none for the IMU angles, a log without commands, or a command that
+  // does not move.
+  std::optional<FrequencyComparison> frequency;
 };
 
 struct LogComparison {
@@ -42,13 +49,15 @@ struct LogComparison {
 // the same grid; interpolation only matters for logs written otherwise). A channel with more
 // than `max_points` frames keeps, for at most max_points frames, the envelope (see
 // envelope_indices) of its measured, simulated and residual angle, a third of the budget each,
-// so that every trace keeps its peaks.
+// so that every trace keeps its peaks. Each joint with a commanded angle in `measured` also gets
+// its frequency response (before any thinning).
 LogComparison compare_logs(const JointLog& measured, const JointLog& simulated,
                            std::size_t max_points);
 
 // {"name", "set", "t": [s...], "frames_simulated", "simulated_end_s", "thinned",
 //  "channels": [{"name", "rms_deg", "max_abs_deg", "t": [...] (only when thinned), "measured":
-//  [...], "simulated": [...]}]}; degrees rounded to 6 significant digits, times to 1 µs, NaN
+//  [...], "simulated": [...], "frequency": {...} (when there is one,
+//  frequency_comparison_json)}]}; degrees rounded to 6 significant digits, times to 1 µs, NaN
 // as null. The page's script computes the residual measured − simulated from these.
 nlohmann::json log_comparison_json(const LogComparison& comparison);
 
