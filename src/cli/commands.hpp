@@ -24,5 +24,6 @@ CommandRunner add_loop_command(CLI::App& app);
 CommandRunner add_init_robot_command(CLI::App& app);
 CommandRunner add_check_robot_command(CLI::App& app);
 CommandRunner add_report_command(CLI::App& app);
+CommandRunner add_spread_command(CLI::App& app);
 
 }  // namespace motoflex::cli

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   runners["init-robot"] = motoflex::cli::add_init_robot_command(app);
   runners["check-robot"] = motoflex::cli::add_check_robot_command(app);
   runners["report"] = motoflex::cli::add_report_command(app);
+  runners["spread"] = motoflex::cli::add_spread_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
