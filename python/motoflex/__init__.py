@@ -24,6 +24,8 @@ from ._motoflex import (  # noqa: F401  (the public API)
     export,
     export_formats,
     fit,
+    frequency_response,
+    parameter_spread,
     read_log,
     read_parameters,
     resume,

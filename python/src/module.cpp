@@ -14,4 +14,5 @@ PYBIND11_MODULE(_motoflex, m) {
   motoflex::python::bind_logs(m);
   motoflex::python::bind_fit(m);
   motoflex::python::bind_export(m);
+  motoflex::python::bind_analysis(m);
 }

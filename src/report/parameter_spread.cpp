@@ -103,6 +103,11 @@ std::string cell(double value) {
   return std::isfinite(value) ? format_number(value, 4) : "–";
 }
 
+// A spread: "×" after a log parameter's factor, nothing after "–".
+std::string spread_cell(double value, bool log_scale) {
+  return cell(value) + (log_scale && std::isfinite(value) ? " ×" : "");
+}
+
 }  // namespace
 
 SpreadReport parameter_spread(const std::vector<std::string>& run_dirs, double k) {
@@ -173,10 +178,9 @@ std::string spread_markdown(const SpreadReport& report) {
   std::string md = "| parameter | unit | runs | mean | between runs | within run (se) | range (±" +
                    format_number(report.k, 3) + ") |\n|---|---|---|---|---|---|---|\n";
   for (const auto& p : report.parameters) {
-    const std::string spread_unit = p.log_scale ? " ×" : "";
     md += "| " + p.name + " | " + p.unit + " | " + std::to_string(p.values.size()) + " | " +
-          cell(p.mean) + " | " + cell(p.between_runs) + spread_unit + " | " + cell(p.within_run) +
-          spread_unit + " | " + cell(p.lower) + " – " + cell(p.upper) +
+          cell(p.mean) + " | " + spread_cell(p.between_runs, p.log_scale) + " | " +
+          spread_cell(p.within_run, p.log_scale) + " | " + cell(p.lower) + " – " + cell(p.upper) +
           (p.clipped ? " (at a bound)" : "") + " |\n";
   }
   return md;

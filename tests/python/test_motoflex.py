@@ -199,5 +199,51 @@ class ExportTest(unittest.TestCase):
                 motoflex.export(params, robot, "fbx", os.path.join(tmp, "x"))
 
 
+class AnalysisTest(unittest.TestCase):
+    def test_frequency_response_of_a_delay(self):
+        t = np.arange(0.0, 20.0, 0.005)
+        rng = np.random.default_rng(1)
+        freqs, phases = 0.05 * np.arange(1, 151), rng.uniform(0, 2 * np.pi, 150)
+
+        def command(times):
+            return 0.1 * np.sin(2 * np.pi * np.outer(times, freqs) + phases).sum(axis=1)
+
+        delay_s = 0.01
+        r = motoflex.frequency_response(t, command(t), command(t - delay_s))
+        band = (r["f_hz"] > 0.5) & (r["f_hz"] < 7.0)
+        self.assertGreater(band.sum(), 10)
+        np.testing.assert_allclose(r["gain_db"][band], 0.0, atol=0.3)
+        np.testing.assert_allclose(r["phase_deg"][band], -360.0 * r["f_hz"][band] * delay_s,
+                                   atol=3.0)
+        same = motoflex.frequency_response(t, command(t), command(t), command(t))
+        self.assertGreater(same["coherent_points"], 10)
+        self.assertEqual(same["gain_rms_db"], 0.0)
+        self.assertIsNone(motoflex.frequency_response(t, np.ones_like(t), command(t)))
+        with self.assertRaisesRegex(ValueError, "measured"):
+            motoflex.frequency_response(t, command(t), command(t)[:-1])
+
+    def test_parameter_spread_of_two_runs(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            runs = []
+            for name, kp in (("a", 4.0), ("b", 6.0)):
+                run = os.path.join(tmp, name)
+                os.makedirs(run)
+                files = {"run.json": {"kind": "fit"},
+                         "inputs.json": {"free": [{"name": "bench.kp", "unit": "1", "lower": 0,
+                                                   "upper": 10, "log": False}]},
+                         "best.json": {"free": {"bench.kp": kp}},
+                         "summary.json": {"best_fitness": 1e-4}}
+                for file, content in files.items():
+                    with open(os.path.join(run, file), "w", encoding="utf-8") as f:
+                        json.dump(content, f)
+                runs.append(run)
+            spread = motoflex.parameter_spread(runs, k=1.0)
+            kp = spread["parameters"][0]
+            self.assertEqual(kp["mean"], 5.0)
+            self.assertAlmostEqual(kp["lower"], 5.0 - 2.0 ** 0.5)
+            with self.assertRaises(motoflex.InputError):
+                motoflex.parameter_spread([os.path.join(tmp, "nothing")])
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -97,6 +97,9 @@ TEST(ParameterSpread, OneFitWithAStandardErrorGivesKErrorsEachSide) {
   EXPECT_EQ(json["parameters"][0]["bounds"][1], 10.0);
   EXPECT_NE(spread_markdown(r).find("| bench.kp | 1 | 1 | 4 |"), std::string::npos)
       << spread_markdown(r);
+  EXPECT_NE(spread_markdown(r).find("| bench.armature_kg_m2 | kg·m² | 1 | 0.001 | – | – |"),
+            std::string::npos)
+      << spread_markdown(r);
 }
 
 TEST(ParameterSpread, TheRangeCoversEachRunsOwnErrorAndTheSpreadBetweenRuns) {
