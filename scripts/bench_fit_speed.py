@@ -36,12 +36,10 @@ import argparse
 import concurrent.futures
 import fnmatch
 import json
-import os
 import random
 import shutil
 import statistics
 import subprocess
-import sys
 from pathlib import Path
 
 import yaml  # python3-yaml (scripts/setup)

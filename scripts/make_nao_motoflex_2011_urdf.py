@@ -17,7 +17,6 @@ simulation (and of SDF/MJCF exports), as in the original, which has no joint sto
 Deterministic: the same bytes every run. Usage: make_nao_motoflex_2011_urdf.py [--out FILE]
 """
 import argparse
-import math
 import os
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

@@ -28,6 +28,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from yaml_paths import with_absolute_paths  # noqa: E402
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 STS_LOGS = os.path.join(ROOT, "..", "shared", "data", "bam", "sts3250", "raw")
 BENCH_TRUTH = os.path.join(ROOT, "scenarios", "truth", "hidden", "none.yaml")
@@ -36,30 +39,6 @@ STS_FIT = os.path.join(ROOT, "scenarios", "fit", "servo_pendulum_sts3250.yaml")
 UNITS = {"unit_a": {"bench.Kt_nm_per_a": 0.33, "joint.pendulum.friction_nm": 0.06, "seed": 21},
          "unit_b": {"bench.Kt_nm_per_a": 0.35, "joint.pendulum.friction_nm": 0.08, "seed": 22},
          "unit_c": {"bench.Kt_nm_per_a": 0.37, "joint.pendulum.friction_nm": 0.10, "seed": 23}}
-
-
-def absolute_paths(path, polish, drop_recordings=()):
-    """`path`'s YAML text with its top-level and recording paths made absolute (it is written
-    elsewhere), `polish` appended, and the recordings named in drop_recordings left out."""
-    folder = os.path.dirname(path)
-    out = []
-    with open(path) as f:
-        for line in f:
-            key = line.split(":", 1)[0]
-            if key in ("scenario", "data", "validation", "out") and not line.startswith(" "):
-                value = line.split(":", 1)[1].split("#", 1)[0].strip()
-                line = "%s: %s\n" % (key, os.path.normpath(os.path.join(folder, value)))
-            if "scenario: ../" in line and line.lstrip().startswith("- {"):
-                if any(name in line for name in drop_recordings):
-                    continue
-                start = line.index("scenario: ") + len("scenario: ")
-                end = line.index("}", start)
-                target = os.path.normpath(os.path.join(folder, line[start:end].strip()))
-                line = line[:start] + target + line[end:]
-            out.append(line)
-    if polish:
-        out.append("polish: %s\n" % polish)
-    return "".join(out)
 
 
 def unit_truth(text, values):
@@ -100,10 +79,10 @@ def fit(binary, config, data, run, threads):
 
 
 def units_section(args, work):
-    truth_text = absolute_paths(BENCH_TRUTH, None, drop_recordings=("validation/",))
+    truth_text = with_absolute_paths(BENCH_TRUTH, drop_recordings=("validation/",))
     config = os.path.join(work, "bench_units.yaml")
     with open(config, "w") as f:
-        f.write(absolute_paths(BENCH_FIT, "{method: lm, max_iterations: 10}"))
+        f.write(with_absolute_paths(BENCH_FIT, {"polish": "{method: lm, max_iterations: 10}"}))
     runs, rows = [], []
     for name, values in UNITS.items():
         truth = os.path.join(work, name + ".yaml")
@@ -157,7 +136,7 @@ def sts_section(args, work):
         return ["STS3250 logs absent (%s): no real-session table." % STS_LOGS, ""]
     config = os.path.join(work, "sts3250.yaml")
     with open(config, "w") as f:
-        f.write(absolute_paths(STS_FIT, "{method: none}"))
+        f.write(with_absolute_paths(STS_FIT, {"polish": "{method: none}"}))
     runs, rows, names = [], [], []
     for log in logs:
         with open(log) as f:
