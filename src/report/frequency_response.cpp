@@ -127,6 +127,7 @@ std::vector<FrequencyResponse> estimate(const std::vector<double>& time_s,
     return {};  // a constant command excites nothing
   }
   std::vector<std::vector<double>> ys;
+  ys.reserve(outputs.size());
   for (const auto* o : outputs) ys.push_back(resampled(time_s, *o, n, grid));
   std::vector<double> window(L);
   for (std::size_t i = 0; i < L; ++i) {

@@ -111,8 +111,7 @@ std::string render_report(const RunRecord& record, const ReportOptions& options)
 std::string write_report(const std::string& run_dir, const std::string& out,
                          const ReportOptions& options) {
   const RunRecord record = read_run_dir(run_dir);
-  const std::string path =
-      out.empty() ? (std::filesystem::path(run_dir) / "report.html").string() : out;
+  std::string path = out.empty() ? (std::filesystem::path(run_dir) / "report.html").string() : out;
   write_file_atomically(path, render_report(record, options));
   return path;
 }
