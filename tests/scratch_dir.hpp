@@ -22,7 +22,7 @@ inline std::filesystem::path scratch_root_path() {
 
 // The process's scratch root (created on first use).
 inline std::filesystem::path scratch_root() {
-  const auto root = scratch_root_path();
+  auto root = scratch_root_path();
   std::filesystem::create_directories(root);
   return root;
 }
@@ -31,7 +31,7 @@ inline std::filesystem::path scratch_root() {
 // that ctest runs at the same time (and test suites of other checkouts) out of each other's
 // folders.
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = scratch_root() / name;
+  auto dir = scratch_root() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -77,6 +77,7 @@ std::vector<double> grid(double dt_s, double duration_s) {
 std::vector<double> sampled(const Multisine& u, const std::vector<double>& time_s,
                             double delay_s = 0.0) {
   std::vector<double> out;
+  out.reserve(time_s.size());
   for (const double t : time_s) out.push_back(u(t - delay_s));
   return out;
 }
