@@ -3,16 +3,10 @@
 #include <cmath>
 #include <filesystem>
 
+#include "json_numbers.hpp"
 #include "motoflex/core/error.hpp"
 
 namespace motoflex::report {
-namespace {
-
-nlohmann::json finite_or_null(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
-}  // namespace
 
 nlohmann::json convergence_json(const std::vector<GenerationRow>& rows) {
   if (rows.empty()) return nullptr;
@@ -23,8 +17,8 @@ nlohmann::json convergence_json(const std::vector<GenerationRow>& rows) {
   for (const auto& row : rows) {
     out["generation"].push_back(row.generation);
     out["evaluations"].push_back(row.evaluations);
-    out["best"].push_back(finite_or_null(row.best));
-    out["median"].push_back(finite_or_null(row.median));
+    out["best"].push_back(detail::number_json(row.best));
+    out["median"].push_back(detail::number_json(row.median));
   }
   return out;
 }
@@ -35,8 +29,7 @@ nlohmann::json correlation_json(const NamedMatrix& correlation) {
   for (const auto& row : correlation.values) {
     nlohmann::json values = nlohmann::json::array();
     for (const double v : row) {
-      values.push_back(std::isfinite(v) ? nlohmann::json(std::round(v * 1e4) / 1e4)
-                                        : nlohmann::json(nullptr));
+      values.push_back(std::isfinite(v) ? nlohmann::json(std::round(v * 1e4) / 1e4) : nullptr);
     }
     matrix.push_back(std::move(values));
   }

@@ -3,16 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
+
+#include "json_numbers.hpp"
 
 namespace motoflex::report {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kMinSamples = 64;
+constexpr int kSignificant = 5;  // digits in the JSON: far below what a Bode plot resolves
 
 // Samples before the first non-finite value in any of the series.
 std::size_t usable_span(const std::vector<const std::vector<double>*>& series, std::size_t n) {
@@ -161,28 +162,10 @@ double wrapped_deg(double degrees) {
   return degrees - 360.0 * std::round(degrees / 360.0);
 }
 
-double rounded(double value) {
-  if (!std::isfinite(value) || value == 0.0) return value;
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.5g", value);
-  return std::strtod(buffer, nullptr);
-}
-
-nlohmann::json numbers(const std::vector<double>& values) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const double v : values)
-    out.push_back(std::isfinite(v) ? nlohmann::json(rounded(v)) : nullptr);
-  return out;
-}
-
-nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(rounded(value)) : nlohmann::json(nullptr);
-}
-
 nlohmann::json response_json(const FrequencyResponse& response) {
-  return {{"gain_db", numbers(response.gain_db)},
-          {"phase_deg", numbers(response.phase_deg)},
-          {"coherence", numbers(response.coherence)}};
+  return {{"gain_db", detail::numbers_json(response.gain_db, kSignificant)},
+          {"phase_deg", detail::numbers_json(response.phase_deg, kSignificant)},
+          {"coherence", detail::numbers_json(response.coherence, kSignificant)}};
 }
 
 }  // namespace
@@ -239,16 +222,16 @@ std::optional<FrequencyComparison> compare_frequency_responses(
 }
 
 nlohmann::json frequency_comparison_json(const FrequencyComparison& comparison) {
-  return {{"f_hz", numbers(comparison.measured.frequency_hz)},
+  return {{"f_hz", detail::numbers_json(comparison.measured.frequency_hz, kSignificant)},
           {"measured", response_json(comparison.measured)},
           {"simulated", response_json(comparison.simulated)},
           {"coherent_points", comparison.coherent_points},
-          {"gain_rms_db", number(comparison.gain_rms_db)},
-          {"phase_rms_deg", number(comparison.phase_rms_deg)},
-          {"measured_peak_hz", number(comparison.measured_peak_hz)},
-          {"measured_peak_db", number(comparison.measured_peak_db)},
-          {"simulated_peak_hz", number(comparison.simulated_peak_hz)},
-          {"simulated_peak_db", number(comparison.simulated_peak_db)}};
+          {"gain_rms_db", detail::number_json(comparison.gain_rms_db, kSignificant)},
+          {"phase_rms_deg", detail::number_json(comparison.phase_rms_deg, kSignificant)},
+          {"measured_peak_hz", detail::number_json(comparison.measured_peak_hz, kSignificant)},
+          {"measured_peak_db", detail::number_json(comparison.measured_peak_db, kSignificant)},
+          {"simulated_peak_hz", detail::number_json(comparison.simulated_peak_hz, kSignificant)},
+          {"simulated_peak_db", detail::number_json(comparison.simulated_peak_db, kSignificant)}};
 }
 
 }  // namespace motoflex::report

@@ -2,18 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <set>
 
+#include "json_numbers.hpp"
 #include "motoflex/report/downsample.hpp"
 
 namespace motoflex::report {
 namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+// Six significant digits print short and are far below what a plot or a reader resolves.
+constexpr int kSignificant = 6;
 
 // Value of the series (times `t`, values `y`) at time `at` by linear interpolation; NaN outside
 // the series' span. `cursor` remembers where the previous (earlier) lookup ended.
@@ -98,26 +99,6 @@ ChannelComparison compare_channel(const std::string& name, const std::vector<dou
   return out;
 }
 
-// Six significant digits print short and are far below what a plot or a reader resolves.
-double rounded(double value, int significant) {
-  if (!std::isfinite(value) || value == 0.0) return value;
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.*g", significant, value);
-  return std::strtod(buffer, nullptr);
-}
-
-nlohmann::json numbers_json(const std::vector<double>& values) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const double v : values) {
-    if (std::isfinite(v)) {
-      out.push_back(rounded(v, 6));
-    } else {
-      out.push_back(nullptr);
-    }
-  }
-  return out;
-}
-
 nlohmann::json times_json(const std::vector<double>& time_s) {
   nlohmann::json out = nlohmann::json::array();
   for (const double t : time_s) out.push_back(std::round(t * 1e6) / 1e6);
@@ -167,18 +148,15 @@ nlohmann::json log_comparison_json(const LogComparison& comparison) {
   for (const auto& channel : comparison.channels) {
     nlohmann::json item;
     item["name"] = channel.name;
-    item["rms_deg"] = std::isfinite(channel.rms_deg) ? nlohmann::json(rounded(channel.rms_deg, 6))
-                                                     : nlohmann::json(nullptr);
-    item["max_abs_deg"] = std::isfinite(channel.max_abs_deg)
-                              ? nlohmann::json(rounded(channel.max_abs_deg, 6))
-                              : nlohmann::json(nullptr);
+    item["rms_deg"] = detail::number_json(channel.rms_deg, kSignificant);
+    item["max_abs_deg"] = detail::number_json(channel.max_abs_deg, kSignificant);
     if (!channel.frames.empty()) {
       std::vector<double> t;
       for (const std::size_t f : channel.frames) t.push_back(comparison.time_s[f]);
       item["t"] = times_json(t);
     }
-    item["measured"] = numbers_json(channel.measured_deg);
-    item["simulated"] = numbers_json(channel.simulated_deg);
+    item["measured"] = detail::numbers_json(channel.measured_deg, kSignificant);
+    item["simulated"] = detail::numbers_json(channel.simulated_deg, kSignificant);
     if (channel.frequency) item["frequency"] = frequency_comparison_json(*channel.frequency);
     channels.push_back(std::move(item));
   }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "json_numbers.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/report/html_text.hpp"
 #include "motoflex/report/parameter_table.hpp"
@@ -89,16 +90,6 @@ void summarise(ParameterSpread& p, double k) {
   }
 }
 
-nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
-nlohmann::json numbers(const std::vector<double>& values) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const double v : values) out.push_back(number(v));
-  return out;
-}
-
 std::string cell(double value) {
   return std::isfinite(value) ? format_number(value, 4) : "–";
 }
@@ -158,18 +149,19 @@ nlohmann::json spread_json(const SpreadReport& report) {
   out["runs"] = report.runs;
   out["parameters"] = nlohmann::json::array();
   for (const auto& p : report.parameters) {
-    out["parameters"].push_back({{"name", p.name},
-                                 {"unit", p.unit},
-                                 {"log", p.log_scale},
-                                 {"values", numbers(p.values)},
-                                 {"standard_errors", numbers(p.standard_errors)},
-                                 {"mean", number(p.mean)},
-                                 {"between_runs", number(p.between_runs)},
-                                 {"within_run", number(p.within_run)},
-                                 {"lower", number(p.lower)},
-                                 {"upper", number(p.upper)},
-                                 {"bounds", {number(p.bound_lower), number(p.bound_upper)}},
-                                 {"clipped", p.clipped}});
+    out["parameters"].push_back(
+        {{"name", p.name},
+         {"unit", p.unit},
+         {"log", p.log_scale},
+         {"values", detail::numbers_json(p.values)},
+         {"standard_errors", detail::numbers_json(p.standard_errors)},
+         {"mean", detail::number_json(p.mean)},
+         {"between_runs", detail::number_json(p.between_runs)},
+         {"within_run", detail::number_json(p.within_run)},
+         {"lower", detail::number_json(p.lower)},
+         {"upper", detail::number_json(p.upper)},
+         {"bounds", {detail::number_json(p.bound_lower), detail::number_json(p.bound_upper)}},
+         {"clipped", p.clipped}});
   }
   return out;
 }
