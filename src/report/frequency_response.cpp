@@ -64,34 +64,45 @@ struct Spectra {
   std::vector<std::complex<double>> cross;  // S_xy per output
 };
 
-// DFT at `omega` (rad per sample) of the Hann-windowed, mean-removed segment [begin, begin+L).
-std::complex<double> windowed_dft(const std::vector<double>& x, std::size_t begin, std::size_t L,
-                                  const std::vector<double>& window, double omega) {
-  double mean = 0.0;
-  for (std::size_t n = 0; n < L; ++n) mean += x[begin + n];
-  mean /= static_cast<double>(L);
+// The Welch segments of `x`: `segments` of length L overlapping by half, each mean-removed
+// and Hann-windowed (`window`), once for every frequency.
+std::vector<std::vector<double>> windowed_segments(const std::vector<double>& x, std::size_t L,
+                                                   std::size_t segments,
+                                                   const std::vector<double>& window) {
+  std::vector<std::vector<double>> out(segments, std::vector<double>(L));
+  for (std::size_t k = 0; k < segments; ++k) {
+    const std::size_t begin = k * (L / 2);
+    double mean = 0.0;
+    for (std::size_t n = 0; n < L; ++n) mean += x[begin + n];
+    mean /= static_cast<double>(L);
+    for (std::size_t n = 0; n < L; ++n) out[k][n] = window[n] * (x[begin + n] - mean);
+  }
+  return out;
+}
+
+// DFT of a windowed segment at `omega` (rad per sample).
+std::complex<double> dft(const std::vector<double>& segment, double omega) {
   const std::complex<double> step = std::polar(1.0, -omega);
   std::complex<double> rotation = 1.0;
   std::complex<double> sum = 0.0;
-  for (std::size_t n = 0; n < L; ++n) {
-    sum += window[n] * (x[begin + n] - mean) * rotation;
+  for (const double v : segment) {
+    sum += v * rotation;
     rotation *= step;
   }
   return sum;
 }
 
-Spectra welch_spectra(const std::vector<double>& input,
-                      const std::vector<std::vector<double>>& outputs, std::size_t L,
-                      std::size_t segments, const std::vector<double>& window, double omega) {
+// Segments of the input (`input[k]`) and of each output (`outputs[o][k]`).
+Spectra welch_spectra(const std::vector<std::vector<double>>& input,
+                      const std::vector<std::vector<std::vector<double>>>& outputs, double omega) {
   Spectra s;
   s.output.assign(outputs.size(), 0.0);
   s.cross.assign(outputs.size(), 0.0);
-  for (std::size_t k = 0; k < segments; ++k) {
-    const std::size_t begin = k * (L / 2);
-    const std::complex<double> x = windowed_dft(input, begin, L, window, omega);
+  for (std::size_t k = 0; k < input.size(); ++k) {
+    const std::complex<double> x = dft(input[k], omega);
     s.input += std::norm(x);
     for (std::size_t o = 0; o < outputs.size(); ++o) {
-      const std::complex<double> y = windowed_dft(outputs[o], begin, L, window, omega);
+      const std::complex<double> y = dft(outputs[o][k], omega);
       s.output[o] += std::norm(y);
       s.cross[o] += std::conj(x) * y;
     }
@@ -127,13 +138,16 @@ std::vector<FrequencyResponse> estimate(const std::vector<double>& time_s,
   if (!(*high - *low > 1e-12 * std::max(1.0, std::max(std::abs(*low), std::abs(*high))))) {
     return {};  // a constant command excites nothing
   }
-  std::vector<std::vector<double>> ys;
-  ys.reserve(outputs.size());
-  for (const auto* o : outputs) ys.push_back(resampled(time_s, *o, n, grid));
   std::vector<double> window(L);
   for (std::size_t i = 0; i < L; ++i) {
     window[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * static_cast<double>(i) /
                                      static_cast<double>(L - 1));
+  }
+  const auto x_segments = windowed_segments(x, L, segments, window);
+  std::vector<std::vector<std::vector<double>>> y_segments;
+  y_segments.reserve(outputs.size());
+  for (const auto* o : outputs) {
+    y_segments.push_back(windowed_segments(resampled(time_s, *o, n, grid), L, segments, window));
   }
   const double f_low_hz = 2.0 / (static_cast<double>(L) * grid.dt_s);
   const double f_high_hz = options.max_fraction_of_nyquist * 0.5 / grid.dt_s;
@@ -144,7 +158,7 @@ std::vector<FrequencyResponse> estimate(const std::vector<double>& time_s,
         f_low_hz * std::pow(f_high_hz / f_low_hz,
                             static_cast<double>(p) / static_cast<double>(options.points - 1));
     const Spectra s =
-        welch_spectra(x, ys, L, segments, window, 2.0 * std::numbers::pi * f_hz * grid.dt_s);
+        welch_spectra(x_segments, y_segments, 2.0 * std::numbers::pi * f_hz * grid.dt_s);
     for (std::size_t o = 0; o < outputs.size(); ++o) {
       const std::complex<double> h = s.input > 0.0 ? s.cross[o] / s.input : kNaN;
       const double denominator = s.input * s.output[o];
