@@ -24,7 +24,6 @@ Writes DIR/design.md (every candidate), DIR/excitation_scenario.yaml (the best c
 scenario) and DIR/excitation.csv with its sidecar (its commands, simulated at the estimate).
 """
 import argparse
-import csv
 import json
 import math
 import os
@@ -35,20 +34,11 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from yaml_paths import with_absolute_paths  # noqa: E402
+from csv_columns import read_columns  # noqa: E402
+from yaml_paths import top_level_path, with_absolute_paths, with_relative_paths  # noqa: E402
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 EXCITATION = re.compile(r"^(\s*excitation:\s*)\{.*\}\s*$")
-
-
-def config_value(path, key):
-    with open(path, encoding="utf-8") as f:
-        for line in f:
-            if line.startswith(key + ":"):
-                value = line.split(":", 1)[1].split("#", 1)[0].strip()
-                return os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(path)),
-                                                     value))
-    raise SystemExit("%s: no `%s:` line" % (path, key))
 
 
 def excitation_line(text):
@@ -69,35 +59,15 @@ def candidate_scenario(base_text, spec):
     return "".join(out)
 
 
-def read_log(path):
-    with open(path, newline="", encoding="utf-8") as f:
-        rows = list(csv.reader(line for line in f if not line.startswith("#")))
-    header = rows[0]
-    return header, [[float(x) for x in row] for row in rows[1:]]
-
-
 def peak_command_speed(path):
-    header, rows = read_log(path)
-    columns = [i for i, name in enumerate(header) if name.endswith(".cmd")]
+    """The largest commanded joint speed (rad/s) of a log, from its .cmd columns."""
+    header, columns = read_columns(path)
+    t = columns["time_s"]
     peak = 0.0
-    for a, b in zip(rows, rows[1:]):
-        dt = b[0] - a[0]
-        for c in columns:
-            peak = max(peak, abs(b[c] - a[c]) / dt)
+    for name in (n for n in header if n.endswith(".cmd")):
+        q = columns[name]
+        peak = max([peak] + [abs(q[i + 1] - q[i]) / (t[i + 1] - t[i]) for i in range(len(t) - 1)])
     return peak
-
-
-def relative_paths(text, folder):
-    """Scenario text whose absolute top-level paths are made relative to `folder`, where the
-    text is written."""
-    out = []
-    for line in text.splitlines(keepends=True):
-        key = line.split(":", 1)[0]
-        value = line.split(":", 1)[1].strip() if ":" in line else ""
-        if key in ("robot", "scenario") and os.path.isabs(value):
-            line = "%s: %s\n" % (key, os.path.relpath(value, os.path.abspath(folder)))
-        out.append(line)
-    return "".join(out)
 
 
 def run(binary, *args):
@@ -108,8 +78,10 @@ def run(binary, *args):
 
 
 def evaluate(args, config, scenario_text, params_file, folder):
-    """Simulates the candidate, fits one evaluation from the estimate; returns
-    (peak speed, {name: (value, standard error)}) or (peak speed, None) when too fast."""
+    """Simulates the candidate and fits one evaluation from the estimate. Returns (peak speed,
+    None) when too fast, else (peak speed, {name: (value, standard error, relative error)}):
+    the error relative to the value, or to 1 % of the bounds' width where the value is near 0
+    (the bounds as the fit recorded them in its inputs.json)."""
     os.makedirs(os.path.join(folder, "data"), exist_ok=True)
     scenario = os.path.join(folder, "scenario.yaml")
     with open(scenario, "w", encoding="utf-8") as f:
@@ -122,22 +94,18 @@ def evaluate(args, config, scenario_text, params_file, folder):
     out = os.path.join(folder, "run")
     run(args.binary, "fit", config, "--data", os.path.join(folder, "data"), "--start-from",
         args.params, "--max-evaluations", "1", "--threads", str(args.threads), "--out", out)
-    with open(os.path.join(out, "summary.json"), encoding="utf-8") as f:
-        summary = json.load(f)
-    with open(os.path.join(out, "best.json"), encoding="utf-8") as f:
-        best = json.load(f)["free"]
-    intervals = summary.get("confidence_intervals", {})
-    return speed, {name: (value, intervals.get(name, {}).get("standard_error", math.nan))
-                   for name, value in best.items()}
-
-
-def relative_errors(errors, bounds):
-    out = {}
-    for name, (value, se) in errors.items():
-        lower, upper = bounds.get(name, (math.nan, math.nan))
-        floor = 0.01 * (upper - lower) if math.isfinite(upper - lower) else 0.0
-        out[name] = se / max(abs(value), floor, 1e-300) if math.isfinite(se) else math.inf
-    return out
+    files = {}
+    for name in ("summary", "best", "inputs"):
+        with open(os.path.join(out, name + ".json"), encoding="utf-8") as f:
+            files[name] = json.load(f)
+    intervals = files["summary"].get("confidence_intervals", {})
+    width = {p["name"]: p["upper"] - p["lower"] for p in files["inputs"]["free"]}
+    errors = {}
+    for name, value in files["best"]["free"].items():
+        se = intervals.get(name, {}).get("standard_error", math.nan)
+        scale = max(abs(value), 0.01 * width.get(name, 0.0), 1e-300)
+        errors[name] = (value, se, se / scale if math.isfinite(se) else math.inf)
+    return speed, errors
 
 
 def check_lines(args, scored, estimate, names):
@@ -151,16 +119,13 @@ def check_lines(args, scored, estimate, names):
              "parameters the data were simulated with (about 1 or less where the prediction "
              "holds).", "",
              "| candidate | " + " | ".join(names) + " |", "|---|" + "---|" * len(names)]
-    for score, label, _, relative, folder in (scored[0], scored[-1]):
+    for score, label, _, errors, folder in (scored[0], scored[-1]):
         out = os.path.join(folder, "check")
         run(args.binary, "fit", config, "--data", os.path.join(folder, "data"), "--threads",
             str(args.threads), "--out", out)
         with open(os.path.join(out, "best.json"), encoding="utf-8") as f:
             fitted = json.load(f)["free"]
-        cells = []
-        for name in names:
-            se = relative[name] * max(abs(estimate[name]), 1e-300)
-            cells.append("%.2f" % (abs(fitted[name] - estimate[name]) / se))
+        cells = ["%.2f" % (abs(fitted[n] - estimate[n]) / errors[n][1]) for n in names]
         lines.append("| %s (score %.3f) | %s |" % (label, score, " | ".join(cells)))
     return lines
 
@@ -189,7 +154,7 @@ def main():
                              "recorded so far)")
     args = parser.parse_args()
 
-    scenario_path = config_value(args.fit, "scenario")
+    scenario_path = top_level_path(args.fit, "scenario")
     base_text = with_absolute_paths(scenario_path)
     if excitation_line(base_text) is None:
         raise SystemExit("%s: the scenario has no `excitation: {...}` motion to design" %
@@ -216,11 +181,6 @@ def prepare_and_design(args, base_text, values, work):
     config = os.path.join(work, "fit_covariance.yaml")
     with open(config, "w", encoding="utf-8") as f:
         f.write(with_absolute_paths(args.fit, {"polish": "{method: none}"}))
-    bounds = {}
-    for line in open(args.fit, encoding="utf-8"):
-        match = re.match(r"\s+([\w.*]+):\s*\{lower:\s*([-\d.e+]+),\s*upper:\s*([-\d.e+]+)", line)
-        if match:
-            bounds[match.group(1)] = (float(match.group(2)), float(match.group(3)))
 
     candidates = []
     for kind in args.kinds.split(","):
@@ -234,10 +194,10 @@ def prepare_and_design(args, base_text, values, work):
     for path in args.baseline:
         candidates.append(("baseline: " + os.path.basename(path), with_absolute_paths(path)))
 
-    return design(args, candidates, work, config, params_file, bounds, values)
+    return design(args, candidates, work, config, params_file, values)
 
 
-def design(args, candidates, work, config, params_file, bounds, values):
+def design(args, candidates, work, config, params_file, values):
     rows = []
     for index, (label, text) in enumerate(candidates):
         folder = os.path.join(work, "%02d" % index)
@@ -246,9 +206,8 @@ def design(args, candidates, work, config, params_file, bounds, values):
             rows.append((math.inf, label, speed, None, folder))
             print("%-40s peak %.2f rad/s: faster than --max-velocity" % (label, speed))
             continue
-        relative = relative_errors(errors, bounds)
-        score = sum(math.log10(r) for r in relative.values()) / len(relative)
-        rows.append((score, label, speed, relative, folder))
+        score = sum(math.log10(e[2]) for e in errors.values()) / len(errors)
+        rows.append((score, label, speed, errors, folder))
         print("%-40s peak %.2f rad/s  score %.3f" % (label, speed, score))
     rows.sort(key=lambda r: r[0])
     names = next(r[3] for r in rows if r[3] is not None).keys()
@@ -260,12 +219,12 @@ def design(args, candidates, work, config, params_file, bounds, values):
                  args.noise_rad, args.max_velocity), "",
              "| candidate | peak speed (rad/s) | score | " + " | ".join(names) + " |",
              "|---|---|---|" + "---|" * len(names)]
-    for score, label, speed, relative, _ in rows:
-        if relative is None:
+    for score, label, speed, errors, _ in rows:
+        if errors is None:
             lines.append("| %s | %.2f | too fast |%s" % (label, speed, " – |" * len(names)))
         else:
             lines.append("| %s | %.2f | %.3f | %s |" % (label, speed, score, " | ".join(
-                "%.2g" % relative[n] for n in names)))
+                "%.2g" % errors[n][2] for n in names)))
     if args.check:
         lines += check_lines(args, [r for r in rows if r[3] is not None], values, names)
     text = "\n".join(lines) + "\n"
@@ -276,7 +235,7 @@ def design(args, candidates, work, config, params_file, bounds, values):
     with open(os.path.join(best, "scenario.yaml"), encoding="utf-8") as f:
         scenario = f.read()
     with open(os.path.join(args.out, "excitation_scenario.yaml"), "w", encoding="utf-8") as f:
-        f.write(relative_paths(scenario, args.out))
+        f.write(with_relative_paths(scenario, args.out))
     for name in ("excitation.csv", "excitation.yaml"):
         shutil.copy(os.path.join(best, "data", name), os.path.join(args.out, name))
     print(text)
