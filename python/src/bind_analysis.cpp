@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "json_python.hpp"
 #include "motoflex/report/frequency_response.hpp"
 #include "motoflex/report/parameter_spread.hpp"
 #include "numpy_arrays.hpp"
@@ -19,10 +20,6 @@ namespace motoflex::python {
 namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-py::object json_value(const nlohmann::json& json) {
-  return py::module_::import("json").attr("loads")(json.dump());
-}
 
 std::vector<double> series(const Array& array, const char* what, std::size_t frames) {
   if (array.ndim() != 1) throw py::value_error(std::string(what) + ": expected a 1-D array");
@@ -43,7 +40,7 @@ py::object frequency_response(const Array& time_s, const Array& command, const A
     const auto comparison =
         report::compare_frequency_responses(t, u, y, series(*simulated, "simulated", t.size()));
     if (!comparison) return py::none();
-    return json_value(report::frequency_comparison_json(*comparison));
+    return json_to_python(report::frequency_comparison_json(*comparison));
   }
   const auto response = report::estimate_frequency_response(t, u, y);
   if (!response) return py::none();
@@ -67,7 +64,7 @@ void bind_analysis(py::module_& m) {
   m.def(
       "parameter_spread",
       [](const std::vector<std::string>& run_dirs, double k) {
-        return json_value(report::spread_json(report::parameter_spread(run_dirs, k)));
+        return json_to_python(report::spread_json(report::parameter_spread(run_dirs, k)));
       },
       py::arg("run_dirs"), py::arg("k") = 2.0,
       "Randomisation ranges from several fits of the same parameters (as `motoflex spread`): a "

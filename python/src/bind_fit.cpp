@@ -18,6 +18,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "json_python.hpp"
 #include "motoflex/core/atomic_file.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/fit/fit_config.hpp"
@@ -42,10 +43,6 @@ FitOverrides overrides_of(std::optional<int> threads, std::optional<std::uint64_
   overrides.max_seconds = max_seconds;
   overrides.out = out;
   return overrides;
-}
-
-py::object json_to_python(const nlohmann::ordered_json& json) {
-  return py::module_::import("json").attr("loads")(json.dump());
 }
 
 // The summary as a dict: summary.json's content plus the one-line and full reports.
@@ -137,7 +134,7 @@ py::dict run_summary(const std::string& run_dir) {
   if (!in) throw InputError(path.string(), 0, "", "no summary (has the fit finished?)");
   std::stringstream text;
   text << in.rdbuf();
-  return py::module_::import("json").attr("loads")(text.str()).cast<py::dict>();
+  return json_text_to_python(text.str()).cast<py::dict>();
 }
 
 }  // namespace

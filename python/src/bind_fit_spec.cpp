@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "json_python.hpp"
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/fit_spec.hpp"
 
@@ -48,9 +49,7 @@ void bind_strategy(py::module_& m) {
       .def_readwrite("algorithm", &StrategyConfig::algorithm)
       .def_readwrite("polish", &StrategyConfig::polish)
       .def_readwrite("polish_evaluations", &StrategyConfig::polish_evaluations)
-      .def("to_dict", [](const StrategyConfig& s) {
-        return py::module_::import("json").attr("loads")(strategy_to_json(s).dump());
-      });
+      .def("to_dict", [](const StrategyConfig& s) { return json_to_python(strategy_to_json(s)); });
   py::class_<PolishSpec>(m, "PolishSpec",
                          "The `polish:` section: Levenberg-Marquardt after the strategy "
                          "(method 'lm'), and the covariance / 95 % intervals.")
@@ -160,10 +159,7 @@ void bind_fit_spec(py::module_& m) {
           },
           "(True, '') or (False, what is wrong), without reading any file.")
       .def(
-          "to_dict",
-          [](const FitSpec& s) {
-            return py::module_::import("json").attr("loads")(fit_spec_to_json(s).dump());
-          },
+          "to_dict", [](const FitSpec& s) { return json_to_python(fit_spec_to_json(s)); },
           "The spec as fit.yaml would read it back (paths absolute).")
       .def("__repr__", [](const FitSpec& s) { return "<motoflex.FitSpec " + s.name + ">"; });
 }
