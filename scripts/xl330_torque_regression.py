@@ -71,9 +71,8 @@ DRIVES = {
     "linear": lambda u, rate: [u],
     "U·|U|": lambda u, rate: [u, u * np.abs(u)],
     "I·|I|": lambda u, rate: [u, (u - 0.3 * rate) * np.abs(u - 0.3 * rate)],
+    **{"|U|^%.1f" % gamma: power_law(gamma) for gamma in (0.6, 0.7, 0.8, 0.9)},
 }
-for _gamma in (0.6, 0.7, 0.8, 0.9):
-    DRIVES["|U|^%.1f" % _gamma] = power_law(_gamma)
 
 
 def regress(logs, drive):
@@ -113,22 +112,24 @@ def main():
              "| logs | samples | linear: K_t/R (N·m/V) | linear: residual RMS (N·m) | "
              "with U·\\|U\\|: K_t/R | U·\\|U\\| (N·m/V²) | with U·\\|U\\|: residual RMS (N·m) |",
              "|---|---|---|---|---|---|---|"]
-    for name, chosen in [("every gain", logs)] + [
-            ("kp %d" % kp, [log for log in logs if log["kp"] == kp]) for kp in gains]:
-        linear, linear_rms, _, samples = regress(chosen, "linear")
-        concave, concave_rms, _, _ = regress(chosen, "U·|U|")
+    subsets = [("every gain", logs)] + [
+        ("kp %d" % kp, [log for log in logs if log["kp"] == kp]) for kp in gains]
+    # Every drive law on every subset, regressed once for both tables.
+    fits = {(name, drive): regress(chosen, drive) for name, chosen in subsets for drive in DRIVES}
+    for name, _ in subsets:
+        linear, linear_rms, _, samples = fits[(name, "linear")]
+        concave, concave_rms, _, _ = fits[(name, "U·|U|")]
         lines.append("| %s | %d | %.4f | %.4f | %.4f | %.5f | %.4f |" % (
             name, samples, linear[0], linear_rms, concave[0], concave[1], concave_rms))
     lines += ["", "Which concave law: residual RMS (N·m) of each drive law, same samples and "
               "other regressors. U·|U|: quadratic in the drive; |U|^γ: a power law of the duty; "
               "I·|I|: quadratic in the current proxy U − 0.3·θ̇, as the torque saturation acts "
               "on the current.", "",
-              "| drive law | every gain | kp 100 | kp 400 | kp 800 |", "|---|---|---|---|---|"]
+              "| drive law | " + " | ".join(name for name, _ in subsets) + " |",
+              "|---|" + "---|" * len(subsets)]
     for drive in DRIVES:
-        rms = [regress(chosen, drive)[1] for chosen in
-               [logs] + [[log for log in logs if log["kp"] == kp] for kp in gains]]
-        lines.append("| %s | %s |" % (drive.replace("|", "\\|"),
-                                      " | ".join("%.4f" % r for r in rms)))
+        lines.append("| %s | %s |" % (drive.replace("|", "\\|"), " | ".join(
+            "%.4f" % fits[(name, drive)][1] for name, _ in subsets)))
     text = "\n".join(lines) + "\n"
     os.makedirs(args.results, exist_ok=True)
     with open(os.path.join(args.results, "xl330_torque_regression.md"), "w") as f:
