@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "fit_hold_identified.hpp"
 #include "fit_start_from.hpp"
 #include "motoflex/core/error.hpp"
 #include "motoflex/core/error_collector.hpp"
@@ -261,6 +262,32 @@ std::vector<double> incumbent_coordinates(const FitSpec& spec, const ParameterSp
   return x;
 }
 
+// `hold_identified`: the parameters the --start-from run identified leave the search and are
+// held at its values, as `fixed` entries (so the fit's identity and resume see them).
+void hold_identified_parameters(FitConfig& config, ParameterSet& base) {
+  if (config.start_from.empty()) {
+    throw error_at(
+        config.hold_identified_where.file.empty() ? config.root : config.hold_identified_where,
+        "needs --start-from RUN/best.json (the run whose identified parameters it "
+        "holds)");
+  }
+  const auto held =
+      detail::hold_identified(config.start_from, config.free_parameters, config.incumbent);
+  const SourceRef summary{(fs::path(config.start_from).parent_path() / "summary.json").string(), 0,
+                          "confidence_intervals"};
+  if (config.fixed_where.size() != config.fixed.size()) {
+    config.fixed_where.resize(config.fixed.size(), config.root);
+  }
+  for (const detail::HeldParameter& h : held) {
+    config.held_identified.push_back(h.name);
+    for (const std::string& target : h.targets) {
+      base.set(target, h.value);
+      config.fixed.emplace_back(target, h.value);
+      config.fixed_where.push_back({summary.file, 0, summary.field + "." + h.name});
+    }
+  }
+}
+
 }  // namespace
 
 FitConfig resolve_fit_config(const FitSpec& spec) {
@@ -280,13 +307,14 @@ FitConfig resolve_fit_config(const FitSpec& spec) {
   config.train_logs = logs_of(spec.train_data, (import_dir / "train").string());
   config.validation_logs = logs_of(spec.validation_data, (import_dir / "validation").string());
 
-  const ParameterSet base = apply_fixed(spec, config.scenario->parameters);
+  ParameterSet base = apply_fixed(spec, config.scenario->parameters);
   config.free_parameters = expand_all_free(spec, base);
   add_effect_parameters(spec, effects, base, *config.scenario, config.free_parameters);
   if (!spec.start_from.empty()) {
     config.incumbent = detail::start_from_best(spec.start_from, config.free_parameters);
     config.incumbent_where = {spec.start_from, 0, "--start-from"};
   }
+  if (spec.hold_identified) hold_identified_parameters(config, base);
   config.fitness = fitness_options(spec, *config.scenario->model);
   config.space = std::make_shared<ParameterSpace>(config.free_parameters, base);
   config.incumbent_x = incumbent_coordinates(config, *config.space);

@@ -130,6 +130,7 @@ FitSummary write_fit_outputs(const FitConfig& config, const FitProblem& problem,
   nlohmann::ordered_json free = nlohmann::ordered_json::object();
   for (const auto& p : summary.parameters) free[p.name] = p.value;
   json["free"] = free;
+  if (!config.held_identified.empty()) json["held_identified"] = config.held_identified;
   if (const auto still = excitation_warnings(config.train->model(), config.train->cases());
       !still.empty()) {
     json["excitation_warnings"] = still;

@@ -182,6 +182,12 @@ void read_sections(const YamlValue& root, FitSpec& spec, ErrorCollector& errors)
   errors.check([&] {
     if (const auto loop = root.find("loop")) spec.loop = read_loop(*loop);
   });
+  errors.check([&] {
+    if (const auto hold = root.find("hold_identified")) {
+      spec.hold_identified = hold->as_bool();
+      spec.hold_identified_where = where(*hold);
+    }
+  });
   read_run_settings(root, spec, errors);
 }
 
@@ -191,7 +197,7 @@ FitSpec load_fit_spec(const std::string& path, const FitOverrides& overrides) {
   const YamlValue root = YamlValue::load_file(path);
   root.require_keys_within({"name", "scenario", "data", "logs", "validation", "free", "fixed",
                             "effects", "fitness", "strategy", "budget", "threads", "seed", "out",
-                            "polish", "loop", "incumbent"});
+                            "polish", "loop", "incumbent", "hold_identified"});
   FitSpec spec;
   spec.path = fs::absolute(path).lexically_normal();
   spec.root = {path, root.line(), ""};

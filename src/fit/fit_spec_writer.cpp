@@ -131,6 +131,7 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
   fit["strategy"] = strategy_to_json(spec.strategy);
   fit["budget"] = budget_json(spec.budget);
   if (!spec.polish.method.empty()) fit["polish"] = polish_to_json(spec.polish);
+  if (spec.hold_identified) fit["hold_identified"] = true;
   fit["loop"] = {{"candidates", spec.loop.candidates},
                  {"widen", spec.loop.widen},
                  {"max_iterations", spec.loop.max_iterations},

@@ -28,6 +28,9 @@ struct FitConfig : FitSpec {
   std::shared_ptr<FitnessFunction> validation;  // null without validation logs
   std::shared_ptr<ParameterSpace> space;
   std::vector<double> incumbent_x;  // `incumbent` in search coordinates (empty: none)
+  // `hold_identified`: the free parameters held at the --start-from run's values (their names as
+  // in `free`); summary.json lists them, so a fit chained on this one holds them too.
+  std::vector<std::string> held_identified;
 
   // What decides the result of the run: every spec field except threads, budget and out_dir,
   // with the contents of the scenario, robot and log files. Two configs with the same hash give

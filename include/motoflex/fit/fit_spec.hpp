@@ -230,6 +230,11 @@ struct FitSpec {
   // replaces `incumbent` and the `start` values): each free parameter's value from its "free"
   // entry, else from "parameters" (a parameter the earlier run held), clamped to the bounds.
   std::string start_from;
+  // With start_from: hold the free parameters the earlier run identified (its summary.json's
+  // confidence_intervals, `"identified": true`) at their best.json values and search only the
+  // others (`hold_identified: true`; a chain's later stage on longer windows, README).
+  bool hold_identified = false;
+  SourceRef hold_identified_where;
   double fitness_m = 2.0;                       // F = Σ error² / T^m (seed 001 eq. 2), m ≥ 0
   double fitness_settle_s = 0.0;                // unscored frames at each log's start
   std::map<std::string, double> joint_weights;  // joint → w_i ≥ 0 (absent: 1)
