@@ -234,7 +234,7 @@ def fit_paper(binary, out, threads, seconds, tolerance, floor_points, floor_scal
 
 
 def fit_chain(binary, out, threads, tolerance):
-    """Runs report_paper_chain's two stages into OUT/runs/chain; see chain_result."""
+    """Runs report_paper_chain's stages into OUT/runs/chain; see chain_result."""
     import report_paper_chain  # imports this module: a late import keeps the cycle harmless
     chain_dir = out / "runs" / "chain"
     chain_dir.mkdir(parents=True, exist_ok=True)
@@ -366,7 +366,7 @@ def main():
     parser.add_argument("--skip-fit", action="store_true")
     parser.add_argument("--fit", choices=["cma", "chain", "both"], default="cma",
                         help="the nao_paper fit measured: CMA-ES on the whole problem, the "
-                             "two-stage chain (report_paper_chain.py's stages), or both")
+                             "staged chain (report_paper_chain.py's stages), or both")
     parser.add_argument("--report-only", action="store_true",
                         help="re-read OUT/fit_speed.json and the fit's run folder and rewrite the "
                              "report, measuring nothing")
