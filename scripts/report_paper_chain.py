@@ -31,6 +31,8 @@ import subprocess
 import time
 from pathlib import Path
 
+import yaml  # python3-yaml (scripts/setup)
+
 import bench_fit_speed as fit_speed
 from bench_strategies import derived_config, truth_point, write_config
 
@@ -41,6 +43,20 @@ STAGES = [("short", ROOT / "scenarios/fit/nao_paper_short.yaml"),
 WINDOWS = {"short": "first 2 s", "long": "first 4 s", "whole": "whole 10 s"}
 
 
+def one_evaluation(binary, out, config, name, start_from=None):
+    """summary.json of a fit of `config` (a derived config: one evaluation) written to
+    OUT/NAME.yaml and run into OUT/runs/NAME, started from `start_from` (a best.json) if given."""
+    path = out / f"{name}.yaml"
+    write_config(path, config)
+    run_dir = out / "runs" / name
+    shutil.rmtree(run_dir, ignore_errors=True)
+    command = [binary, "fit", path, "--out", run_dir]
+    if start_from is not None:
+        command += ["--start-from", start_from]
+    subprocess.run([str(c) for c in command], check=True, stdout=subprocess.DEVNULL)
+    return json.loads((run_dir / "summary.json").read_text())
+
+
 def truth_fitness(binary, out, config_path, threads):
     """F at the truth under `config_path`'s scoring (its window), one evaluation, no polish."""
     point = truth_point(config_path, fit_speed.TRUTH)
@@ -49,12 +65,8 @@ def truth_fitness(binary, out, config_path, threads):
     config.pop("hold_identified", None)  # every parameter is given: nothing is searched
     config["free"] = {"ideal.torque_max_nm": {"lower": 1.0, "upper": 100.0, "start": 20.0}}
     config["fixed"] = {**(config.get("fixed") or {}), **point}
-    path = out / f"truth_{config_path.stem}.yaml"
-    write_config(path, config)
-    run_dir = out / "runs" / f"truth_{config_path.stem}"
-    shutil.rmtree(run_dir, ignore_errors=True)
-    subprocess.run([binary, "fit", path, "--out", run_dir], check=True, stdout=subprocess.DEVNULL)
-    return json.loads((run_dir / "summary.json").read_text())["best_fitness"], point
+    summary = one_evaluation(binary, out, config, f"truth_{config_path.stem}")
+    return summary["best_fitness"], point
 
 
 def whole_log_fitness(binary, out, best_json, threads):
@@ -63,14 +75,14 @@ def whole_log_fitness(binary, out, best_json, threads):
     comes from the file's "parameters")."""
     config = derived_config(fit_speed.FIT, {"kind": "cma_es", "sigma": 0.01}, 1, threads, 1)
     config.pop("polish", None)
-    name = f"whole_{best_json.parent.name}"
-    path = out / f"{name}.yaml"
-    write_config(path, config)
-    run_dir = out / "runs" / name
-    shutil.rmtree(run_dir, ignore_errors=True)
-    subprocess.run([str(c) for c in [binary, "fit", path, "--out", run_dir, "--start-from",
-                                     best_json]], check=True, stdout=subprocess.DEVNULL)
-    return json.loads((run_dir / "summary.json").read_text())
+    return one_evaluation(binary, out, config, f"whole_{best_json.parent.name}", best_json)
+
+
+def scores_whole_logs(config_path):
+    """Whether a stage config scores as nao_paper.yaml does (no window): its own summary is then
+    the whole-log evaluation, and its F(truth) is the issue's."""
+    fitness = yaml.safe_load(config_path.read_text()).get("fitness", {})
+    return fitness == yaml.safe_load(fit_speed.FIT.read_text()).get("fitness", {})
 
 
 def run_stages(binary, out):
@@ -95,16 +107,10 @@ def run_stages(binary, out):
 def recheck_uncertainty(binary, out, threads):
     """Stage 1's intervals and sensitivities recomputed at its best.json, without fitting (the
     later stages hold the parameters stage 1 identified and have no covariance of their own)."""
-    for name, config_path in STAGES[:1]:
-        config = derived_config(config_path, {"kind": "nlopt", "algorithm": "sbplx"}, 1, threads, 1)
-        config["polish"] = {"method": "none", "covariance": True}
-        path = out / f"uncertainty_{config_path.stem}.yaml"
-        write_config(path, config)
-        run_dir = out / "runs" / f"{name}_uncertainty"
-        shutil.rmtree(run_dir, ignore_errors=True)
-        subprocess.run([str(c) for c in [binary, "fit", path, "--out", run_dir, "--start-from",
-                                         out / "runs" / name / "best.json"]],
-                       check=True, stdout=subprocess.DEVNULL)
+    name, config_path = STAGES[0]
+    config = derived_config(config_path, {"kind": "nlopt", "algorithm": "sbplx"}, 1, threads, 1)
+    config["polish"] = {"method": "none", "covariance": True}
+    one_evaluation(binary, out, config, f"{name}_uncertainty", out / "runs" / name / "best.json")
 
 
 def stage_results(binary, out, threads):
@@ -115,7 +121,11 @@ def stage_results(binary, out, threads):
     whole_truth, _ = truth_fitness(binary, out, fit_speed.FIT, threads)
     for name, config in STAGES:
         summary = json.loads((out / "runs" / name / "summary.json").read_text())
-        f_truth, point = truth_fitness(binary, out, config, threads)
+        whole_scoring = scores_whole_logs(config)
+        if whole_scoring:
+            f_truth, point = whole_truth, truth_point(config, fit_speed.TRUTH)
+        else:
+            f_truth, point = truth_fitness(binary, out, config, threads)
         parameters = fit_speed.recovered(summary, point)
         if stages:
             # The parameters this stage held: the previous stage's values. Every verdict is stage
@@ -127,7 +137,8 @@ def stage_results(binary, out, threads):
             first = {r["name"]: r["unidentified"] for r in stages[0]["parameters"]}
             for r in parameters:
                 r["unidentified"] = first[r["name"]]
-        whole = whole_log_fitness(binary, out, out / "runs" / name / "best.json", threads)
+        whole = summary if whole_scoring else \
+            whole_log_fitness(binary, out, out / "runs" / name / "best.json", threads)
         wall_file = out / "runs" / "wall_seconds.json"
         process_wall = json.loads(wall_file.read_text()).get(name) if wall_file.exists() else None
         verdicts = "the stage's own run"

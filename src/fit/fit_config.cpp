@@ -271,10 +271,8 @@ void hold_identified_parameters(FitConfig& config, ParameterSet& base) {
         "needs --start-from RUN/best.json (the run whose identified parameters it "
         "holds)");
   }
-  const auto held =
-      detail::hold_identified(config.start_from, config.free_parameters, config.incumbent);
-  const SourceRef summary{(fs::path(config.start_from).parent_path() / "summary.json").string(), 0,
-                          "confidence_intervals"};
+  const std::string summary = (fs::path(config.start_from).parent_path() / "summary.json").string();
+  const auto held = detail::hold_identified(summary, config.free_parameters, config.incumbent);
   if (config.fixed_where.size() != config.fixed.size()) {
     config.fixed_where.resize(config.fixed.size(), config.root);
   }
@@ -283,7 +281,7 @@ void hold_identified_parameters(FitConfig& config, ParameterSet& base) {
     for (const std::string& target : h.targets) {
       base.set(target, h.value);
       config.fixed.emplace_back(target, h.value);
-      config.fixed_where.push_back({summary.file, 0, summary.field + "." + h.name});
+      config.fixed_where.push_back({summary, 0, "confidence_intervals." + h.name});
     }
   }
 }

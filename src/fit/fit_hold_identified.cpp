@@ -1,49 +1,40 @@
 #include "fit_hold_identified.hpp"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
+#include <set>
 
+#include "fit_start_from.hpp"
 #include "motoflex/core/error.hpp"
 
 namespace motoflex::detail {
 namespace {
 
-// The names of the free parameters the run behind `summary_path` identified (its
+// The names of the free parameters the run behind `summary_json` identified (its
 // confidence_intervals, "identified": true) or itself held as identified by the run before it
 // (held_identified: a chain's later stages keep holding what its first stage identified).
-std::vector<std::string> identified_names(const std::string& summary_path) {
-  std::ifstream in(summary_path);
-  if (!in) {
-    throw InputError(summary_path, 0, "hold_identified",
-                     "cannot read the earlier run's summary (it sits beside the --start-from "
-                     "best.json)");
-  }
-  nlohmann::json summary;
-  try {
-    summary = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& error) {
-    throw InputError(summary_path, 0, "hold_identified", std::string("not JSON: ") + error.what());
-  }
-  const bool has_intervals = summary.is_object() && summary.contains("confidence_intervals") &&
-                             summary["confidence_intervals"].is_object();
-  const bool has_held = summary.is_object() && summary.contains("held_identified") &&
-                        summary["held_identified"].is_array();
-  if (!has_intervals && !has_held) {
-    throw InputError(summary_path, 0, "confidence_intervals",
+std::set<std::string> identified_names(const std::string& summary_json) {
+  const nlohmann::json summary = read_earlier_run_json(
+      summary_json, "hold_identified",
+      "cannot read the earlier run's summary (it sits beside the --start-from best.json)");
+  const auto section = [&](const char* key) {
+    return summary.is_object() && summary.contains(key) ? &summary[key] : nullptr;
+  };
+  const nlohmann::json* intervals = section("confidence_intervals");
+  const nlohmann::json* held = section("held_identified");
+  if (!(intervals && intervals->is_object()) && !(held && held->is_array())) {
+    throw InputError(summary_json, 0, "confidence_intervals",
                      "missing: the earlier run has no intervals (give it `polish: {method: lm, "
                      "covariance: true}`) and held nothing as identified");
   }
-  std::vector<std::string> names;
-  if (has_intervals) {
-    for (const auto& [name, entry] : summary["confidence_intervals"].items()) {
-      if (entry.is_object() && entry.value("identified", false) == true) names.push_back(name);
+  std::set<std::string> names;
+  if (intervals && intervals->is_object()) {
+    for (const auto& [name, entry] : intervals->items()) {
+      if (entry.is_object() && entry.value("identified", false)) names.insert(name);
     }
   }
-  if (has_held) {
-    for (const auto& name : summary["held_identified"]) {
-      if (name.is_string()) names.push_back(name.get<std::string>());
+  if (held && held->is_array()) {
+    for (const auto& name : *held) {
+      if (name.is_string()) names.insert(name.get<std::string>());
     }
   }
   return names;
@@ -51,31 +42,26 @@ std::vector<std::string> identified_names(const std::string& summary_path) {
 
 }  // namespace
 
-std::vector<HeldParameter> hold_identified(const std::string& best_json,
+std::vector<HeldParameter> hold_identified(const std::string& summary_json,
                                            std::vector<FreeParameter>& free,
                                            std::vector<std::pair<std::string, double>>& incumbent) {
-  const std::string summary_path =
-      (std::filesystem::path(best_json).parent_path() / "summary.json").string();
-  const std::vector<std::string> names = identified_names(summary_path);
-  const auto identified = [&](const FreeParameter& p) {
-    return std::find(names.begin(), names.end(), p.name) != names.end();
-  };
+  const std::set<std::string> names = identified_names(summary_json);
   std::vector<HeldParameter> held;
-  for (const FreeParameter& p : free) {
-    if (identified(p)) held.push_back({p.name, p.targets, p.start});
+  std::vector<FreeParameter> searched;
+  for (FreeParameter& p : free) {
+    if (names.count(p.name) > 0) {
+      held.push_back({p.name, std::move(p.targets), p.start});
+    } else {
+      searched.push_back(std::move(p));
+    }
   }
-  if (held.size() == free.size()) {
-    throw InputError(summary_path, 0, "hold_identified",
+  if (searched.empty()) {
+    throw InputError(summary_json, 0, "hold_identified",
                      "the earlier run identified every free parameter: nothing is left to search");
   }
-  free.erase(std::remove_if(free.begin(), free.end(), identified), free.end());
+  free = std::move(searched);
   incumbent.erase(std::remove_if(incumbent.begin(), incumbent.end(),
-                                 [&](const auto& entry) {
-                                   return std::any_of(held.begin(), held.end(),
-                                                      [&](const HeldParameter& h) {
-                                                        return h.name == entry.first;
-                                                      });
-                                 }),
+                                 [&](const auto& entry) { return names.count(entry.first) > 0; }),
                   incumbent.end());
   return held;
 }

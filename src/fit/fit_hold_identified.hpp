@@ -20,14 +20,14 @@ struct HeldParameter {
   double value = 0.0;
 };
 
-// Reads summary.json beside `best_json` and removes from `free` (and from `incumbent`, the start
-// point by free parameter name) every parameter whose confidence_intervals entry has
-// "identified": true or that the earlier run itself held (its "held_identified", so a chain's
-// third stage holds what its first identified); returns them with their start (the best.json
-// value). Throws InputError naming the file when the summary is missing, unreadable or has
-// neither (the first run needs `polish: {covariance: true}`), or when nothing would be left to
-// search.
-std::vector<HeldParameter> hold_identified(const std::string& best_json,
+// Reads `summary_json` (the summary.json beside the --start-from best.json) and moves out of
+// `free` (and out of `incumbent`, the start point by free parameter name) every parameter whose
+// confidence_intervals entry has "identified": true or that the earlier run itself held (its
+// "held_identified", so a chain's third stage holds what its first identified); returns them with
+// their start (the best.json value). Throws InputError naming the file when the summary is
+// missing, unreadable or has neither (the first run needs `polish: {covariance: true}`), or when
+// nothing would be left to search.
+std::vector<HeldParameter> hold_identified(const std::string& summary_json,
                                            std::vector<FreeParameter>& free,
                                            std::vector<std::pair<std::string, double>>& incumbent);
 

@@ -2,22 +2,26 @@
 
 #include <algorithm>
 #include <fstream>
-#include <nlohmann/json.hpp>
 
 #include "motoflex/core/error.hpp"
 
 namespace motoflex::detail {
 
+nlohmann::json read_earlier_run_json(const std::string& path, const std::string& field,
+                                     const std::string& unreadable) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, field, unreadable);
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& error) {
+    throw InputError(path, 0, field, std::string("not JSON: ") + error.what());
+  }
+}
+
 std::vector<std::pair<std::string, double>> start_from_best(const std::string& best_json,
                                                             std::vector<FreeParameter>& free) {
-  std::ifstream in(best_json);
-  if (!in) throw InputError(best_json, 0, "--start-from", "cannot read the file");
-  nlohmann::json best;
-  try {
-    best = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& error) {
-    throw InputError(best_json, 0, "--start-from", std::string("not JSON: ") + error.what());
-  }
+  const nlohmann::json best =
+      read_earlier_run_json(best_json, "--start-from", "cannot read the file");
   const auto number_in = [&](const char* section, const std::string& name, double& value) {
     if (!best.is_object() || !best.contains(section) || !best[section].is_object()) return false;
     const auto found = best[section].find(name);

@@ -12,12 +12,14 @@
 #include <nlohmann/json.hpp>
 
 #include "fit_test_support.hpp"
+#include "io/input_error_support.hpp"
 #include "motoflex/core/error.hpp"
 
 namespace motoflex {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::expect_input_error;
 using testing::first_pendulum_fit;
 using testing::read_text;
 using testing::write_pendulum_fit;
@@ -26,15 +28,6 @@ void write_intervals(const fs::path& summary, const std::map<std::string, bool>&
   nlohmann::json intervals = nlohmann::json::object();
   for (const auto& [name, yes] : identified) intervals[name] = {{"identified", yes}};
   std::ofstream(summary) << nlohmann::json{{"confidence_intervals", intervals}}.dump();
-}
-
-std::string error_of(const std::string& yaml, const FitOverrides& overrides) {
-  try {
-    load_fit_config(yaml, overrides);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
 }
 
 TEST(FitHoldIdentifiedTest, HoldsWhatTheEarlierRunIdentifiedAtItsValues) {
@@ -51,8 +44,9 @@ TEST(FitHoldIdentifiedTest, HoldsWhatTheEarlierRunIdentifiedAtItsValues) {
   overrides.start_from = best.string();
 
   // The first run had no polish: no intervals to go by.
-  std::string what = error_of(yaml, overrides);
-  EXPECT_NE(what.find("summary.json"), std::string::npos) << what;
+  const std::string summary = (best.parent_path() / "summary.json").string();
+  std::string what = expect_input_error([&] { load_fit_config(yaml, overrides); }, summary, 0,
+                                        "confidence_intervals");
   EXPECT_NE(what.find("covariance: true"), std::string::npos) << what;
 
   // K_t and the friction identified, the viscous coefficient not, the armature not listed.
@@ -114,9 +108,8 @@ TEST(FitHoldIdentifiedTest, NeedsAStartAndSomethingLeftToSearch) {
   testing::record_pendulum_log(dir / "data", "clean");
   FitOverrides overrides;
   overrides.out = (dir / "run").string();
-  std::string what = error_of(yaml, overrides);
-  EXPECT_NE(what.find("fit.yaml"), std::string::npos) << what;
-  EXPECT_NE(what.find("hold_identified"), std::string::npos) << what;
+  std::string what =
+      expect_input_error([&] { load_fit_config(yaml, overrides); }, yaml, 12, "hold_identified");
   EXPECT_NE(what.find("--start-from"), std::string::npos) << what;
 
   const fs::path best = dir / "earlier" / "best.json";
@@ -127,8 +120,8 @@ TEST(FitHoldIdentifiedTest, NeedsAStartAndSomethingLeftToSearch) {
                                                      {"joint.pendulum.viscous_nm_s_per_rad", true},
                                                      {"bench.armature_kg_m2", true}});
   overrides.start_from = best.string();
-  what = error_of(yaml, overrides);
-  EXPECT_NE(what.find("summary.json"), std::string::npos) << what;
+  what = expect_input_error([&] { load_fit_config(yaml, overrides); },
+                            (dir / "earlier" / "summary.json").string(), 0, "hold_identified");
   EXPECT_NE(what.find("nothing is left"), std::string::npos) << what;
   fs::remove_all(dir);
 }

@@ -1,4 +1,4 @@
-"""scripts/bench_fit_speed.py: the two-stage chain's rows sit after the measures and before the
+"""scripts/bench_fit_speed.py: the staged chain's rows sit after the measures and before the
 CMA-ES fit's per-parameter table, add up the stages, and say whether the target was reached."""
 
 import importlib.util
