@@ -228,6 +228,30 @@ void describe_sampling(std::optional<double> dt_s, JointLog& log, std::vector<st
                                   " ms); rate_hz is the mean rate");
 }
 
+// The servo's own temperature readings (the entries' `temp`, °C) as the log's housing
+// temperature bench.housing_temperature_c, when every entry has one: their median, which a
+// single misread sample (the STS3250 logs read 7 °C once amid 20–26 °C) does not move. The
+// bench law scales its winding resistance to it by bench.R_temperature_per_k.
+void add_housing_temperature(const json& entries, const Fields& fields, JointLog& log,
+                             std::vector<std::string>& notes) {
+  std::vector<double> readings_c;
+  readings_c.reserve(entries.size());
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const json* temp = find_key(entries[i], "temp");
+    if (temp == nullptr) {
+      if (!readings_c.empty()) notes.push_back("temp missing in some entries: not imported");
+      return;
+    }
+    readings_c.push_back(fields.number(*temp, "entries[" + std::to_string(i) + "].temp"));
+  }
+  if (readings_c.empty()) return;
+  const auto middle = readings_c.begin() + static_cast<std::ptrdiff_t>(readings_c.size() / 2);
+  std::nth_element(readings_c.begin(), middle, readings_c.end());
+  log.meta.parameters["bench.housing_temperature_c"] = *middle;
+  notes.push_back("the median logged temp " + number_text(*middle) +
+                  " C is bench.housing_temperature_c");
+}
+
 // BAM's voltage-servo gains for the motor, or a note that BAM has none, plus known remarks.
 void add_motor_facts(BamImport& result, std::vector<std::string>& notes) {
   const auto gains = std::find_if(std::begin(kServoGains), std::end(kServoGains),
@@ -282,6 +306,7 @@ BamImport import_document(const json& doc, const std::string& shown,
   } else {
     notes.push_back("the logged input_volts is the supply_v column (servo: bench drives from it)");
   }
+  add_housing_temperature(entries, fields, log, notes);
   if (torque_off_entry) {
     result.torque_off_s = log.time_s[*torque_off_entry];
     log.meta.parameters["bench.torque_off_s"] = *result.torque_off_s;

@@ -34,6 +34,7 @@ const std::vector<Effect>& effect_library() {
       detail::mounting_offset_effect(),
       detail::winding_heating_effect(),
       detail::torque_saturation_effect(),
+      detail::housing_temperature_effect(),
   };
   return library;
 }

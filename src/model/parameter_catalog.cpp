@@ -140,6 +140,7 @@ const DomainRule kDomainRules[] = {
     {"contact.slip", true, kNonNegative},
     {"bench.max_duty", true, kUnitInterval},
     {"bench.logged_supply", true, {0.0, 1.0, false, false, true}},  // a switch: 0 or 1
+    {"bench.R_temperature_per_k", true, kNonNegative},
     // The bench law's driver limit has no "off" value (its neutral is 1e3 A); the firmware laws'
     // servo.<S>.current_limit_a takes 0 for none (the generic rule below).
     {"motor.current_limit_a", true, kPositive},

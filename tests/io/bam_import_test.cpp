@@ -291,11 +291,35 @@ TEST_F(BamImportTest, OptionalHeaderValuesAreLeftOutWithANote) {
   doc["motor"] = "sts3250";
   const BamImport imported = import_bam_file(write("sts.json", doc), "sts.json");
   const JointLogMeta& meta = imported.log.meta;
-  EXPECT_EQ(meta.parameters.size(), 2u);  // mass and length only
+  EXPECT_EQ(meta.parameters.size(), 3u);  // mass, length and the housing temperature only
   EXPECT_NE(meta.notes.find("no kp"), std::string::npos);
   EXPECT_NE(meta.notes.find("no vin"), std::string::npos);
   EXPECT_NE(meta.notes.find("'sts3250'"), std::string::npos);
   EXPECT_NE(meta.notes.find("set_p_gain"), std::string::npos);
+}
+
+// The servo's temperature readings give the log's housing temperature: their median, which one
+// misread sample does not move (an STS3250 log reads 7 °C once amid 20-26 °C).
+TEST_F(BamImportTest, HousingTemperatureIsTheMedianReading) {
+  json doc = small_log();
+  const double readings_c[] = {28.0, 7.0, 31.0, 30.0};
+  for (int i = 0; i < 4; ++i) doc["entries"][i]["temp"] = readings_c[i];
+  const BamImport imported = import_bam_file(write("warm.json", doc), "warm.json");
+  // Sorted 7, 28, 30, 31: the upper of the two middle readings.
+  EXPECT_EQ(imported.log.meta.parameters.at("bench.housing_temperature_c"), 30.0);
+  EXPECT_NE(imported.log.meta.notes.find("median logged temp 30 C"), std::string::npos)
+      << imported.log.meta.notes;
+
+  // A reading missing in one entry: no temperature, and a note says why.
+  doc["entries"][2].erase("temp");
+  const BamImport partial = import_bam_file(write("partial.json", doc), "partial.json");
+  EXPECT_EQ(partial.log.meta.parameters.count("bench.housing_temperature_c"), 0u);
+  EXPECT_NE(partial.log.meta.notes.find("temp missing in some entries"), std::string::npos)
+      << partial.log.meta.notes;
+
+  doc = small_log();
+  doc["entries"][1]["temp"] = "hot";
+  expect_error(write("hot.json", doc), "entries[1].temp");
 }
 
 TEST_F(BamImportTest, NotJsonNamesTheLine) {

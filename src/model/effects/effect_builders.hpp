@@ -47,5 +47,6 @@ Effect backdrive_friction_effect();
 Effect mounting_offset_effect();
 Effect winding_heating_effect();
 Effect torque_saturation_effect();
+Effect housing_temperature_effect();
 
 }  // namespace motoflex::detail

@@ -19,6 +19,8 @@ namespace motoflex {
 
 // Copper's temperature coefficient of resistance near room temperature (1/K).
 constexpr double kCopperResistancePerK = 0.00393;
+// The temperature at which a resistance that is scaled by temperature is given (°C).
+constexpr double kResistanceReferenceC = 25.0;
 
 struct WindingHeatingParams {
   double thermal_resistance_k_per_w = 0.0;  // R_th, winding to housing; 0 = no heating
