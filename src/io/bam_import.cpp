@@ -229,9 +229,9 @@ void describe_sampling(std::optional<double> dt_s, JointLog& log, std::vector<st
 }
 
 // The servo's own temperature readings (the entries' `temp`, °C) as the log's housing
-// temperature bench.housing_temperature_c, when every entry has one: their median, which a
+// temperature motor.housing_temperature_c, when every entry has one: their median, which a
 // single misread sample (the STS3250 logs read 7 °C once amid 20–26 °C) does not move. The
-// bench law scales its winding resistance to it by bench.R_temperature_per_k.
+// bench law scales its winding resistance to it by motor.R_temperature_per_k.
 void add_housing_temperature(const json& entries, const Fields& fields, JointLog& log,
                              std::vector<std::string>& notes) {
   std::vector<double> readings_c;
@@ -247,9 +247,9 @@ void add_housing_temperature(const json& entries, const Fields& fields, JointLog
   if (readings_c.empty()) return;
   const auto middle = readings_c.begin() + static_cast<std::ptrdiff_t>(readings_c.size() / 2);
   std::nth_element(readings_c.begin(), middle, readings_c.end());
-  log.meta.parameters["bench.housing_temperature_c"] = *middle;
+  log.meta.parameters["motor.housing_temperature_c"] = *middle;
   notes.push_back("the median logged temp " + number_text(*middle) +
-                  " C is bench.housing_temperature_c");
+                  " C is motor.housing_temperature_c");
 }
 
 // BAM's voltage-servo gains for the motor, or a note that BAM has none, plus known remarks.

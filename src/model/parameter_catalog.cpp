@@ -28,6 +28,12 @@ void append_motor_effect_specs(std::vector<ParameterSpec>& specs) {
   // The motor's torque saturation k = 1/I_s (the effect torque_saturation;
   // torque_saturation.hpp): linear at 0; 5 /A saturates at 0.2 A, below a small servo's stall.
   add("motor.torque_saturation_per_a", 0.0, 0.0, 5.0);
+  // The servo's housing temperature (°C; a log's own reading, e.g. the BAM import's median
+  // temp) and the winding resistance's change per kelvin of it (the effect housing_temperature:
+  // R = R_25·(1 + α·(T − 25 °C)); copper 0.00393 /K; 0 = off, the temperature then unused).
+  // Its neutral is the reference temperature itself (winding_heating.hpp's kResistanceReferenceC).
+  add("motor.housing_temperature_c", 25.0, -40.0, 150.0);
+  add("motor.R_temperature_per_k", 0.0, 0.0, 0.05);
 }
 
 }  // namespace
@@ -140,7 +146,7 @@ const DomainRule kDomainRules[] = {
     {"contact.slip", true, kNonNegative},
     {"bench.max_duty", true, kUnitInterval},
     {"bench.logged_supply", true, {0.0, 1.0, false, false, true}},  // a switch: 0 or 1
-    {"bench.R_temperature_per_k", true, kNonNegative},
+    {"motor.R_temperature_per_k", true, kNonNegative},
     // The bench law's driver limit has no "off" value (its neutral is 1e3 A); the firmware laws'
     // servo.<S>.current_limit_a takes 0 for none (the generic rule below).
     {"motor.current_limit_a", true, kPositive},

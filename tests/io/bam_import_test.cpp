@@ -306,14 +306,14 @@ TEST_F(BamImportTest, HousingTemperatureIsTheMedianReading) {
   for (int i = 0; i < 4; ++i) doc["entries"][i]["temp"] = readings_c[i];
   const BamImport imported = import_bam_file(write("warm.json", doc), "warm.json");
   // Sorted 7, 28, 30, 31: the upper of the two middle readings.
-  EXPECT_EQ(imported.log.meta.parameters.at("bench.housing_temperature_c"), 30.0);
+  EXPECT_EQ(imported.log.meta.parameters.at("motor.housing_temperature_c"), 30.0);
   EXPECT_NE(imported.log.meta.notes.find("median logged temp 30 C"), std::string::npos)
       << imported.log.meta.notes;
 
   // A reading missing in one entry: no temperature, and a note says why.
   doc["entries"][2].erase("temp");
   const BamImport partial = import_bam_file(write("partial.json", doc), "partial.json");
-  EXPECT_EQ(partial.log.meta.parameters.count("bench.housing_temperature_c"), 0u);
+  EXPECT_EQ(partial.log.meta.parameters.count("motor.housing_temperature_c"), 0u);
   EXPECT_NE(partial.log.meta.notes.find("temp missing in some entries"), std::string::npos)
       << partial.log.meta.notes;
 

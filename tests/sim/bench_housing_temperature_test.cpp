@@ -1,5 +1,5 @@
 // `servo: bench` scales its winding resistance to the log's housing temperature:
-// R = R_25·(1 + α·(T − 25 °C)), α = bench.R_temperature_per_k, T = bench.housing_temperature_c
+// R = R_25·(1 + α·(T − 25 °C)), α = motor.R_temperature_per_k, T = motor.housing_temperature_c
 // (each BAM log's sidecar). Held against gravity at full duty with no dry friction, the arm
 // settles where the stall torque K_t·U/R(T) equals m·g·l·sin q, so a warmer log holds lower,
 // exactly as the resistance says; α = 0 ignores the temperature.
@@ -33,8 +33,8 @@ ParameterSet stall_bench(double r_per_k, double housing_c) {
   p.set("bench.Kt_nm_per_a", 0.1);
   p.set("bench.R_ohm", 2.6);
   p.set("bench.supply_v", 6.0);
-  p.set("bench.R_temperature_per_k", r_per_k);
-  p.set("bench.housing_temperature_c", housing_c);
+  p.set("motor.R_temperature_per_k", r_per_k);
+  p.set("motor.housing_temperature_c", housing_c);
   return p;
 }
 
@@ -75,7 +75,7 @@ TEST(BenchHousingTemperature, ANonPositiveResistanceIsAModelError) {
   // 1 + 0.05·(−40 − 25) < 0.
   const RolloutResult result = hold(stall_bench(0.05, -40.0), 0.1);
   EXPECT_EQ(result.end, RolloutEnd::kModelError);
-  EXPECT_NE(result.end_detail.find("bench.R_temperature_per_k"), std::string::npos)
+  EXPECT_NE(result.end_detail.find("motor.R_temperature_per_k"), std::string::npos)
       << result.end_detail;
 }
 

@@ -110,8 +110,6 @@ inline RobotModel make_one_joint_robot(const std::string& name, const OneJointRo
                  ", 0.01, 0.5]\n"
                  "  bench.torque_off_s: [1.0e9, 0.0, 1.0e9]\n"
                  "  bench.logged_supply: [1, 0, 1]\n"
-                 "  bench.housing_temperature_c: [25.0, -40.0, 150.0]\n"
-                 "  bench.R_temperature_per_k: [0.0, 0.0, 0.05]\n"
                  "  contact.mu: [1.0, 0.1, 2.0]\n  contact.soft_erp: [0.2, 0.05, 0.9]\n"
                  "  contact.soft_cfm: [1.0e-4, 1.0e-7, 1.0e-2]\n"
                  "  contact.slip: [1.0e-3, 1.0e-5, 0.05]\n"

@@ -103,7 +103,7 @@ TEST(ServoLawRegistryTest, FrictionAndArmatureEffectsApplyWhereTheLawsReadThem) 
   for (const char* law : {"velocity", "pd_torque", "motoflex", "ideal"}) {
     EXPECT_FALSE(applies("torque_saturation", law)) << law;
   }
-  // The logged housing temperature: the bench law reads each log's bench.housing_temperature_c.
+  // The logged housing temperature: the bench law reads each log's motor.housing_temperature_c.
   EXPECT_TRUE(applies("housing_temperature", "bench"));
   for (const char* law : {"dynamixel", "feetech", "velocity", "pd_torque", "motoflex", "ideal"}) {
     EXPECT_FALSE(applies("housing_temperature", law)) << law;

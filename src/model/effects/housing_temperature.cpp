@@ -3,7 +3,7 @@
 namespace motoflex::detail {
 
 // The winding resistance follows the servo's logged housing temperature (bench law,
-// bench.housing_temperature_c from each log's sidecar): R = R_25·(1 + α·(T − 25 °C)). Logs
+// motor.housing_temperature_c from each log's sidecar): R = R_25·(1 + α·(T − 25 °C)). Logs
 // recorded one after another on a servo that warms up (the XL330 session: 28 °C at its first
 // logs, 40 °C at its last) then drive a weaker motor the later they were taken. Copper gives
 // α = 0.00393 /K when the reading is the winding's; a housing sensor that lags a hotter
@@ -14,7 +14,7 @@ Effect housing_temperature_effect() {
           "R = R_25*(1 + alpha*(T - 25 C))",
           "a servo whose logs differ in strength with the temperature it logged: the later, "
           "warmer logs of a session follow their commands more weakly than the first ones",
-          {global("bench.R_temperature_per_k", 0.1, false, 0.0, 0.05)},
+          {global("motor.R_temperature_per_k", 0.1, false, 0.0, 0.05)},
           false,
           0};
 }

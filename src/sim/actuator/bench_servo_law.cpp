@@ -65,8 +65,8 @@ const char* const kBenchNames[] = {"bench.kp",
                                    "bench.length_m",
                                    "bench.torque_off_s",
                                    "bench.logged_supply",
-                                   "bench.housing_temperature_c",
-                                   "bench.R_temperature_per_k"};
+                                   "motor.housing_temperature_c",
+                                   "motor.R_temperature_per_k"};
 
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   std::vector<std::string> out(std::begin(kBenchNames), std::end(kBenchNames));
@@ -83,6 +83,8 @@ std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   out.emplace_back("motor.torque_saturation_per_a");
   out.emplace_back("motor.winding_k_per_w");
   out.emplace_back("motor.winding_heat_j_per_k");
+  out.emplace_back("motor.housing_temperature_c");
+  out.emplace_back("motor.R_temperature_per_k");
   return out;
 }
 
@@ -100,17 +102,17 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   if (!(bench.current_limit_a > 0.0)) throw ModelError("motor.current_limit_a must be positive");
   bench.saturation_per_a = read_torque_saturation_per_a(get);
   if (!(bench.resistance_ohm > 0.0)) throw ModelError("bench.R_ohm must be positive");
-  // A log's housing temperature (its sidecar's bench.housing_temperature_c, the servo's own
+  // A log's housing temperature (its sidecar's motor.housing_temperature_c, the servo's own
   // reading) scales the winding's resistance from its value at kResistanceReferenceC:
-  // R(T) = R_ref·(1 + α·(T − T_ref)), α = bench.R_temperature_per_k (copper's 0.00393 /K when
+  // R(T) = R_ref·(1 + α·(T − T_ref)), α = motor.R_temperature_per_k (copper's 0.00393 /K when
   // the reading is the winding's; 0, the default: bench.R_ohm whatever the temperature).
-  const double r_per_k = get("bench.R_temperature_per_k");
+  const double r_per_k = get("motor.R_temperature_per_k");
   if (r_per_k != 0.0) {
     bench.resistance_ohm *=
-        1.0 + r_per_k * (get("bench.housing_temperature_c") - kResistanceReferenceC);
+        1.0 + r_per_k * (get("motor.housing_temperature_c") - kResistanceReferenceC);
     if (!(bench.resistance_ohm > 0.0)) {
       throw ModelError(
-          "bench.R_temperature_per_k and bench.housing_temperature_c leave no positive winding "
+          "motor.R_temperature_per_k and motor.housing_temperature_c leave no positive winding "
           "resistance");
     }
   }
@@ -141,11 +143,7 @@ std::vector<ParameterDefault> defaults(const RobotModel&, std::size_t, const Joi
           {"bench.length_m", 0.1, 0.01, 0.5, xl330},
           {"bench.torque_off_s", 1.0e9, 0.0, 1.0e9, xl330},
           // 1: drive from the log's supply_v column when it has one; 0: bench.supply_v always.
-          {"bench.logged_supply", 1.0, 0.0, 1.0, xl330},
-          // The servo's housing temperature (°C), normally each log's own reading (its
-          // sidecar), and the winding resistance's change per kelvin of it (0: none).
-          {"bench.housing_temperature_c", kResistanceReferenceC, -40.0, 150.0, xl330},
-          {"bench.R_temperature_per_k", 0.0, 0.0, 0.05, xl330}};
+          {"bench.logged_supply", 1.0, 0.0, 1.0, xl330}};
 }
 
 }  // namespace
