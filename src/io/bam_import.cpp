@@ -237,14 +237,15 @@ void add_housing_temperature(const json& entries, const Fields& fields, JointLog
   std::vector<double> readings_c;
   readings_c.reserve(entries.size());
   for (std::size_t i = 0; i < entries.size(); ++i) {
-    const json* temp = find_key(entries[i], "temp");
-    if (temp == nullptr) {
-      if (!readings_c.empty()) notes.push_back("temp missing in some entries: not imported");
-      return;
+    if (const json* temp = find_key(entries[i], "temp")) {
+      readings_c.push_back(fields.number(*temp, "entries[" + std::to_string(i) + "].temp"));
     }
-    readings_c.push_back(fields.number(*temp, "entries[" + std::to_string(i) + "].temp"));
   }
   if (readings_c.empty()) return;
+  if (readings_c.size() != entries.size()) {
+    notes.push_back("temp missing in some entries: not imported");
+    return;
+  }
   const auto middle = readings_c.begin() + static_cast<std::ptrdiff_t>(readings_c.size() / 2);
   std::nth_element(readings_c.begin(), middle, readings_c.end());
   log.meta.parameters["motor.housing_temperature_c"] = *middle;
