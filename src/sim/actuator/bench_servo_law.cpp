@@ -54,19 +54,10 @@ class BenchServoLaw final : public ServoLaw {
   WindingTemperature winding_;  // this rollout's winding
 };
 
-const char* const kBenchNames[] = {"bench.kp",
-                                   "bench.error_gain",
-                                   "bench.max_duty",
-                                   "bench.supply_v",
-                                   "bench.Kt_nm_per_a",
-                                   "bench.R_ohm",
-                                   "bench.armature_kg_m2",
-                                   "bench.mass_kg",
-                                   "bench.length_m",
-                                   "bench.torque_off_s",
-                                   "bench.logged_supply",
-                                   "motor.housing_temperature_c",
-                                   "motor.R_temperature_per_k"};
+const char* const kBenchNames[] = {
+    "bench.kp",          "bench.error_gain",   "bench.max_duty",       "bench.supply_v",
+    "bench.Kt_nm_per_a", "bench.R_ohm",        "bench.armature_kg_m2", "bench.mass_kg",
+    "bench.length_m",    "bench.torque_off_s", "bench.logged_supply"};
 
 std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   std::vector<std::string> out(std::begin(kBenchNames), std::end(kBenchNames));
