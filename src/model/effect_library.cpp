@@ -35,6 +35,7 @@ const std::vector<Effect>& effect_library() {
       detail::winding_heating_effect(),
       detail::torque_saturation_effect(),
       detail::housing_temperature_effect(),
+      detail::servo_derivative_effect(),
   };
   return library;
 }

@@ -34,6 +34,9 @@ void append_motor_effect_specs(std::vector<ParameterSpec>& specs) {
   // Its neutral is the reference temperature itself (winding_heating.hpp's kResistanceReferenceC).
   add("motor.housing_temperature_c", 25.0, -40.0, 150.0);
   add("motor.R_temperature_per_k", 0.0, 0.0, 0.05);
+  // The bench firmware's derivative time T_d (s; the effect servo_derivative): duty =
+  // g·kp·(e + T_d·ė). 0 = the P law BAM describes; 50 ms is far beyond any servo's D.
+  add("bench.derivative_s", 0.0, 0.0, 0.05);
 }
 
 }  // namespace
@@ -147,6 +150,7 @@ const DomainRule kDomainRules[] = {
     {"bench.max_duty", true, kUnitInterval},
     {"bench.logged_supply", true, {0.0, 1.0, false, false, true}},  // a switch: 0 or 1
     {"motor.R_temperature_per_k", true, kNonNegative},
+    {"bench.derivative_s", true, kNonNegative},
     // The bench law's driver limit has no "off" value (its neutral is 1e3 A); the firmware laws'
     // servo.<S>.current_limit_a takes 0 for none (the generic rule below).
     {"motor.current_limit_a", true, kPositive},

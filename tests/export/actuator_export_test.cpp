@@ -58,6 +58,17 @@ TEST(ActuatorExport, BenchServoLinearisedAtTheXl330Defaults) {
   EXPECT_EQ(a.reduction, 1.0);
 }
 
+TEST(ActuatorExport, BenchServoDerivativeTimeIsTheActuatorsKv) {
+  // duty g·kp·(e + T_d·ė): the joint-rate part of the D term is kp_joint·T_d of damping inside
+  // the force limit.
+  const auto model = testing::load_robot("servo_pendulum");
+  ExportInput input = defaults(*model, "bench");
+  input.parameters.set("bench.derivative_s", 0.01);
+  const auto a = export_actuators(input).at(0);
+  EXPECT_NEAR(a.kv_nm_s_per_rad, 0.01 * a.kp_nm_per_rad, 1e-15);
+  EXPECT_GT(a.kv_nm_s_per_rad, 0.0);
+}
+
 // The pendulum bench with its joint run by `law` (servo.pendulum.*) and the law's defaults.
 std::shared_ptr<const RobotModel> pendulum_with(const std::string& law) {
   RobotModel model = *testing::load_robot("servo_pendulum");

@@ -50,8 +50,10 @@ inline std::map<std::string, double> fitted_values(const RobotModel& model) {
         s.name.find(".term_") != std::string::npos || s.name.find("cogging") != std::string::npos ||
         s.name.find("drag_") != std::string::npos ||
         s.name.find("load_saturation") != std::string::npos ||
-        s.name.find("torque_saturation") != std::string::npos) {
-      value = s.default_value;  // effects the exports drop: keep them neutral
+        s.name.find("torque_saturation") != std::string::npos || s.name == "bench.derivative_s") {
+      // Effects the exports drop, or keep in part (the D term's goal-rate feed-forward): keep
+      // them neutral.
+      value = s.default_value;
     }
     out[s.name] = std::min(std::max(value, s.lower), s.upper);
   }

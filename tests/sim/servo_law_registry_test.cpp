@@ -108,6 +108,11 @@ TEST(ServoLawRegistryTest, FrictionAndArmatureEffectsApplyWhereTheLawsReadThem) 
   for (const char* law : {"dynamixel", "feetech", "velocity", "pd_torque", "motoflex", "ideal"}) {
     EXPECT_FALSE(applies("housing_temperature", law)) << law;
   }
+  // The bench firmware's D (the firmware laws have their own kd; motoflex's PID its kd).
+  EXPECT_TRUE(applies("servo_derivative", "bench"));
+  for (const char* law : {"dynamixel", "feetech", "velocity", "pd_torque", "motoflex", "ideal"}) {
+    EXPECT_FALSE(applies("servo_derivative", law)) << law;
+  }
 }
 
 }  // namespace

@@ -12,6 +12,10 @@ void fill(const ExportInput& input, std::size_t actuator, const ParameterReader&
   const double supply_v = get("bench.supply_v");
   const double volts_to_torque = kt / resistance_ohm;
   a.kp_nm_per_rad = volts_to_torque * supply_v * get("bench.error_gain") * get("bench.kp");
+  // A PD firmware's D, duty g·kp·T_d·ė: its joint-rate part is the actuator's kv (inside the
+  // force limit, like the firmware laws' kd); the goal-rate part has no counterpart (the export's
+  // control input is the goal alone) and is dropped.
+  a.kv_nm_s_per_rad = a.kp_nm_per_rad * get("bench.derivative_s");
   // Dropped (no MuJoCo counterpart): the current limit, the torque saturation, the winding's
   // heating and the load-dependent friction terms.
   a.effort_nm = volts_to_torque * supply_v * get("bench.max_duty");

@@ -48,5 +48,6 @@ Effect mounting_offset_effect();
 Effect winding_heating_effect();
 Effect torque_saturation_effect();
 Effect housing_temperature_effect();
+Effect servo_derivative_effect();
 
 }  // namespace motoflex::detail

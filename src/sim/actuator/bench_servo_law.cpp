@@ -15,13 +15,14 @@ namespace {
 class BenchServoLaw final : public ServoLaw {
  public:
   BenchServoLaw(BenchServoParams params, FrictionParams friction, double drift_per_s,
-                bool logged_supply, WindingTemperature winding)
+                bool logged_supply, WindingTemperature winding, double dt_s)
       : params_(params),
         friction_(friction),
         resistance_drift_per_s_(drift_per_s),
         logged_supply_(logged_supply),
         external_(friction_reads_external_torque(friction)),
-        winding_(winding) {}
+        winding_(winding),
+        dt_s_(dt_s) {}
 
   ServoOutput step(const ServoInput& in) override {
     BenchServoParams bench = params_;
@@ -33,8 +34,10 @@ class BenchServoLaw final : public ServoLaw {
     const bool enabled = in.elapsed_s - in.settle_s < bench.torque_off_s;
     if (winding_.heats()) bench.resistance_ohm *= winding_.resistance_factor();
     ServoOutput out;
-    const BenchServoOutput motor =
-        bench_servo_output(bench, in.command_rad, in.angle_rad, in.rate_rad_s, enabled);
+    // The goal's rate over this step, for a PD firmware's ė (bench.derivative_s).
+    const double command_rate_rad_s = (in.next_command_rad - in.command_rad) / dt_s_;
+    const BenchServoOutput motor = bench_servo_output(bench, in.command_rad, in.angle_rad,
+                                                      in.rate_rad_s, enabled, command_rate_rad_s);
     out.torque_nm = motor.torque_nm;
     // The winding heats with its current (none through a released bridge).
     winding_.advance(motor.current_a, bench.resistance_ohm);
@@ -52,6 +55,7 @@ class BenchServoLaw final : public ServoLaw {
   bool logged_supply_;
   bool external_;
   WindingTemperature winding_;  // this rollout's winding
+  double dt_s_;                 // the physics step
 };
 
 const char* const kBenchNames[] = {
@@ -76,6 +80,7 @@ std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   out.emplace_back("motor.winding_heat_j_per_k");
   out.emplace_back("motor.housing_temperature_c");
   out.emplace_back("motor.R_temperature_per_k");
+  out.emplace_back("bench.derivative_s");
   return out;
 }
 
@@ -108,6 +113,10 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
     }
   }
   if (bench.max_duty < 0.0) throw ModelError("bench.max_duty must not be negative");
+  // A PD firmware's derivative time (the effect servo_derivative; 0, the default: P only).
+  bench.derivative_s = get("bench.derivative_s");
+  if (!(bench.derivative_s >= 0.0)) throw ModelError("bench.derivative_s must not be negative");
+  if (!(setup.dt_s > 0.0)) throw ModelError("servo: bench needs a positive physics step");
   const FrictionParams friction =
       read_friction(get, setup.model.actuators[setup.actuator].name, FrictionTerms::kFamily);
   const double logged_supply = get("bench.logged_supply");
@@ -117,7 +126,7 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   const WindingTemperature winding(
       {get("motor.winding_k_per_w"), get("motor.winding_heat_j_per_k")}, setup.dt_s);
   return std::make_unique<BenchServoLaw>(bench, friction, get("motor.R_drift_per_s"),
-                                         logged_supply == 1.0, winding);
+                                         logged_supply == 1.0, winding, setup.dt_s);
 }
 
 // The XL330 bench (scenarios/robots/servo_pendulum).

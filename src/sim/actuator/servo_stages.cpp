@@ -25,16 +25,20 @@ MotorCommand ideal_servo(const IdealServoParams& params, double next_commanded_r
 }
 
 BenchServoOutput bench_servo_output(const BenchServoParams& params, double commanded_rad,
-                                    double measured_rad, double velocity_rad_s,
-                                    bool torque_enabled) {
+                                    double measured_rad, double velocity_rad_s, bool torque_enabled,
+                                    double command_rate_rad_s) {
   // A released H-bridge leaves the windings open: no current, so neither drive nor back-EMF
   // braking.
   if (!torque_enabled) return {};
   // BAM eq. 12: the firmware's P law saturates at the PWM duty limit. min/max rather than
-  // std::clamp, which is undefined for a (bad) negative max_duty.
+  // std::clamp, which is undefined for a (bad) negative max_duty. A PD firmware adds T_d·ė
+  // inside the same gain (skipped at T_d = 0, so the P law stays bit for bit).
+  double error_rad = commanded_rad - measured_rad;
+  if (params.derivative_s != 0.0) {
+    error_rad += params.derivative_s * (command_rate_rad_s - velocity_rad_s);
+  }
   const double duty = std::min(
-      std::max(params.error_gain * params.kp * (commanded_rad - measured_rad), -params.max_duty),
-      params.max_duty);
+      std::max(params.error_gain * params.kp * error_rad, -params.max_duty), params.max_duty);
   const double voltage_v = params.supply_v * duty;
   // BAM eq. 13: current (U − K_t·θ̇)/R through the windings, torque K_t·I.
   const double kt = params.torque_constant_nm_per_a;

@@ -28,7 +28,7 @@ MotorCommand ideal_servo(const IdealServoParams& params, double next_commanded_r
                          double measured_rad, double dt_s);
 
 // The pendulum bench's voltage-controlled P servo (Dynamixel-style, BAM eq. 12–13):
-//   duty = clip(error_gain·kp·(θ_d − θ), −max_duty, +max_duty),  U = supply_v·duty,
+//   duty = clip(error_gain·kp·(e + T_d·ė), −max_duty, +max_duty),  e = θ_d − θ,  U = supply_v·duty,
 //   τ = K_t·U/R − K_t²·θ̇/R       (joint-side K_t and R; drive/brake H-bridge)
 // With torque disabled the H-bridge is released and the torque is zero.
 struct BenchServoParams {
@@ -45,14 +45,18 @@ struct BenchServoParams {
   // The motor's torque saturation k = 1/I_s (motor.torque_saturation_per_a,
   // torque_saturation.hpp): τ = K_t·tanh(k·I)/k after the current limit; 0 = linear.
   double saturation_per_a = 0.0;
+  // The firmware's derivative time T_d (s; bench.derivative_s, the effect servo_derivative): a
+  // PD firmware's D on the error's rate ė = θ̇_d − θ̇, in the P gain's units. 0 = P only.
+  double derivative_s = 0.0;
 };
 struct BenchServoOutput {
   double torque_nm = 0.0;  // on the joint
   double current_a = 0.0;  // through the winding (after the current limit, before saturation)
 };
+// `command_rate_rad_s` is θ̇_d, read only when params.derivative_s is not 0.
 BenchServoOutput bench_servo_output(const BenchServoParams& params, double commanded_rad,
-                                    double measured_rad, double velocity_rad_s,
-                                    bool torque_enabled);
+                                    double measured_rad, double velocity_rad_s, bool torque_enabled,
+                                    double command_rate_rad_s = 0.0);
 // The torque alone.
 double bench_servo_torque_nm(const BenchServoParams& params, double commanded_rad,
                              double measured_rad, double velocity_rad_s, bool torque_enabled);
