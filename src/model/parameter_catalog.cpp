@@ -17,7 +17,7 @@ void add_spec(std::vector<ParameterSpec>& specs, const std::string& name, double
 }
 
 // The robot-wide motor effects appended last (after every per-joint block above them).
-void append_motor_effect_specs(std::vector<ParameterSpec>& specs) {
+void append_servo_effect_specs(std::vector<ParameterSpec>& specs) {
   const auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
     add_spec(specs, name, neutral, lower, upper);
   };
@@ -114,7 +114,7 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   for (const auto& a : model.actuators) {
     add(joint_parameter(a, "mounting_offset", joint_units(a).position), 0.0, -0.1, 0.1);
   }
-  append_motor_effect_specs(specs);
+  append_servo_effect_specs(specs);
   return specs;
 }
 
