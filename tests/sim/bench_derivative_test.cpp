@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bench_stall_support.hpp"
+#include "motoflex/core/line_fit.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
 
 namespace motoflex::testing {
@@ -50,8 +51,8 @@ double arm_inertia_kg_m2(const ParameterSet& v) {
          v.get("bench.mass_kg") * v.get("bench.length_m") * v.get("bench.length_m");
 }
 
-// The decay rate σ (1/s) of |θ − θ_rest| from its peaks after the step: a least-squares line
-// through (t, ln |peak|).
+// The decay rate σ (1/s) of |θ − θ_rest| from its peaks after the step: the slope of a
+// least-squares line through (t, ln |peak|).
 double decay_rate_per_s(const RolloutResult& r, double rest_rad) {
   std::vector<double> t_s;
   std::vector<double> log_amplitude;
@@ -66,17 +67,7 @@ double decay_rate_per_s(const RolloutResult& r, double rest_rad) {
     }
   }
   EXPECT_GE(t_s.size(), 4u) << "too few peaks to measure a decay";
-  double mt = 0, ml = 0;
-  for (std::size_t i = 0; i < t_s.size(); ++i) {
-    mt += t_s[i] / t_s.size();
-    ml += log_amplitude[i] / t_s.size();
-  }
-  double stt = 0, stl = 0;
-  for (std::size_t i = 0; i < t_s.size(); ++i) {
-    stt += (t_s[i] - mt) * (t_s[i] - mt);
-    stl += (t_s[i] - mt) * (log_amplitude[i] - ml);
-  }
-  return -stl / stt;
+  return -fit_line(t_s, log_amplitude, true).slope;
 }
 
 TEST(BenchDerivative, TheDTermAddsExactlyItsDampingAndNothingToTheRestPose) {

@@ -34,8 +34,10 @@ class BenchServoLaw final : public ServoLaw {
     const bool enabled = in.elapsed_s - in.settle_s < bench.torque_off_s;
     if (winding_.heats()) bench.resistance_ohm *= winding_.resistance_factor();
     ServoOutput out;
-    // The goal's rate over this step, for a PD firmware's ė (bench.derivative_s).
-    const double command_rate_rad_s = (in.next_command_rad - in.command_rad) / dt_s_;
+    // The goal's rate over this step, for a PD firmware's ė (only read when bench.derivative_s
+    // is not 0; the rollout has checked dt_s > 0).
+    const double command_rate_rad_s =
+        bench.derivative_s != 0.0 ? (in.next_command_rad - in.command_rad) / dt_s_ : 0.0;
     const BenchServoOutput motor = bench_servo_output(bench, in.command_rad, in.angle_rad,
                                                       in.rate_rad_s, enabled, command_rate_rad_s);
     out.torque_nm = motor.torque_nm;
@@ -116,7 +118,6 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   // A PD firmware's derivative time (the effect servo_derivative; 0, the default: P only).
   bench.derivative_s = get("bench.derivative_s");
   if (!(bench.derivative_s >= 0.0)) throw ModelError("bench.derivative_s must not be negative");
-  if (!(setup.dt_s > 0.0)) throw ModelError("servo: bench needs a positive physics step");
   const FrictionParams friction =
       read_friction(get, setup.model.actuators[setup.actuator].name, FrictionTerms::kFamily);
   const double logged_supply = get("bench.logged_supply");
