@@ -82,7 +82,7 @@ def zmp_figure(out, result, png):
         if own and "series" in own:
             data = read_series(os.path.join(out, own["series"]))
             ax.plot(data["time_s"], [math.degrees(v) for v in data["roll_rad"]], "k--", lw=1.0,
-                    label="walk's own ZMP")
+                    label="the walk file's options")
         chosen = trials_of["chosen"] or {}
         for trial in trials_of["trials"]:
             if "unplannable" in trial:
@@ -102,9 +102,9 @@ def zmp_figure(out, result, png):
         ax.axhline(0.0, color="k", lw=0.4)
         ax.set_ylabel("%s\ntorso roll [deg]" % variant)
         ax.legend(fontsize=6, ncol=2)
-    axes[0, 0].set_title("ZMP experiment on %s (walk's own: %s); chosen: no fall, smallest peak "
-                         "roll" % (zmp["walk"], ", ".join("%s %g" % kv for kv in defaults.items())),
-                         fontsize=9)
+    axes[0, 0].set_title("%s, one option changed at a time (the file's: %s)\nchosen: no fall, "
+                         "smallest peak roll" % (zmp["walk"], ", ".join(
+                             "%s %g" % kv for kv in defaults.items())), fontsize=8)
     axes[-1, 0].set_xlabel("time [s]")
     fig.tight_layout()
     fig.savefig(os.path.join(out, png), dpi=110)

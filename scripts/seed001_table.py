@@ -7,6 +7,8 @@ paper's number beside ours. The paper's numbers (and those of the original 2011 
 in the "ours" column comes from the JSON.
 
 Usage: seed001_table.py [DIR]   (default benchmarks/seed001)
+       seed001_table.py --gait DIR  (scenarios/experiments/seed001_gait.yaml's run: one row per
+                                     gait option changed, one column per model variant)
 """
 
 import json
@@ -111,6 +113,48 @@ def describe_zmp(variant, result):
     return text
 
 
+def describe_gait_cell(run):
+    """One variant's run in the gait table: fall or not, and the mean speed from 1 s to
+    min(9 s, the end) (the measure of the original program's 214 mm/s, motoflex_2011.md §1)."""
+    if run is None:
+        return "not run"
+    if "unplannable" in run:
+        return "unplannable"
+    end = min(9.0, run["end_time_s"]) if run.get("end_time_s") else 9.0
+    speed = f"{run['mean_speed_mm_s']:.0f} mm/s over 1-{end:.1f} s"
+    if run.get("fell"):
+        return f"falls at {run['fall_s']:.2f} s ({run.get('fall_direction') or '?'}), {speed}"
+    return f"walks, {speed}"
+
+
+def gait_table_lines(data):
+    """The 200 mm/s walk of our planner with one gait option changed at a time (the experiment
+    file's `zmp.search`), under every searched variant."""
+    zmp = data["zmp_experiment"]
+    walk = data[zmp["walk"]]
+    variants = list(zmp["variants"])
+    lines = ["| walk option changed | " + " | ".join(variants) + " |",
+             "|---|" + "---|" * len(variants)]
+    cells = []
+    for v in variants:
+        cell = describe_gait_cell(walk.get(v))
+        ensemble = walk.get(v, {}).get("ensemble")
+        if ensemble:
+            n = ensemble["size"]
+            cell += f"; {n} replays with 1e-7 rad noise: {ensemble['fell']} of {n} fall"
+            if ensemble["fell"]:
+                cell += ", at " + spread(ensemble["fall_s"], 2, "s")
+            cell += ", over 1 s to min(9 s, end) " + spread(ensemble["mean_speed_mm_s"], 0, "mm/s")
+        cells.append(cell)
+    defaults = ", ".join(f"{k} {v:g}" for k, v in zmp["defaults"].items())
+    lines.append(f"| none (the walk file: {defaults}) | " + " | ".join(cells) + " |")
+    trials = {v: zmp["variants"][v]["trials"] for v in variants}
+    for i, trial in enumerate(trials[variants[0]]):
+        row = [describe_gait_cell(trials[v][i]) for v in variants]
+        lines.append(f"| `{trial['option']}` {trial['value']:g} | " + " | ".join(row) + " |")
+    return lines
+
+
 def table_lines(data):
     lines = ["| row | paper | ours |", "|---|---|---|"]
     for walk, variant, label, paper in ROWS:
@@ -129,10 +173,13 @@ def table_lines(data):
 
 
 def main():
-    folder = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "benchmarks", "seed001")
+    args = sys.argv[1:]
+    gait = "--gait" in args
+    args = [a for a in args if a != "--gait"]
+    folder = args[0] if args else os.path.join(ROOT, "benchmarks", "seed001")
     with open(os.path.join(folder, "seed001.json"), encoding="utf-8") as f:
         data = json.load(f)
-    lines = table_lines(data)
+    lines = gait_table_lines(data) if gait else table_lines(data)
     with open(os.path.join(folder, "table.md"), "w", encoding="utf-8") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
