@@ -127,26 +127,62 @@ def describe_gait_cell(run):
     return f"walks, {speed}"
 
 
+# The gait file's walks: the paper's result and the original program's on its own command file
+# (motoflex_2011.md §1), beside each walk of our planner.
+GAIT_WALKS = {
+    "walk_200_1": ("200 mm/s, 1 s, our planner's gait",
+                   "209 mm/s (rigid 200); original program on its own file: 214 mm/s, falls "
+                   "at 5.42 s"),
+    "walk_50_2": ("50 mm/s, 2 s, our planner's gait",
+                  "falls after the first step, sideways; original program on its own file: "
+                  "3.08 s, 0.38 m lateral, 17 mm/s"),
+    "walk_200_1_dortmund": ("200 mm/s, 1 s, the Dortmund engine's gait options",
+                            "209 mm/s (rigid 200); original program on its own file: 214 mm/s, "
+                            "falls at 5.42 s"),
+    "walk_50_2_dortmund": ("50 mm/s, 2 s, the Dortmund engine's gait options",
+                           "falls after the first step, sideways; original program on its own "
+                           "file: 3.08 s, 0.38 m lateral, 17 mm/s"),
+}
+
+
+def describe_gait_run(run):
+    """A walk's run with its perturbed replays, if any."""
+    cell = describe_gait_cell(run)
+    if run and run.get("fell") and abs(run.get("lateral_m") or 0.0) >= 0.005:
+        cell += f", lateral {run['lateral_m']:.2f} m"
+    ensemble = (run or {}).get("ensemble")
+    if ensemble:
+        n = ensemble["size"]
+        cell += f"; {n} replays with 1e-7 rad noise: {ensemble['fell']} of {n} fall"
+        if ensemble["fell"]:
+            cell += ", at " + spread(ensemble["fall_s"], 2, "s")
+        cell += ", " + spread(ensemble["mean_speed_mm_s"], 0, "mm/s")
+    return cell
+
+
+def gait_walk_lines(data, variants):
+    """Table 1 of the gait file: each of its walks under each variant."""
+    lines = ["| walk | paper; original program | " + " | ".join(variants) + " |",
+             "|---|---|" + "---|" * len(variants)]
+    for name, (label, paper) in GAIT_WALKS.items():
+        if name in data:
+            cells = [describe_gait_run(data[name].get(v)) for v in variants]
+            lines.append(f"| {label} (`{name}`) | {paper} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def gait_table_lines(data):
-    """The 200 mm/s walk of our planner with one gait option changed at a time (the experiment
-    file's `zmp.search`), under every searched variant."""
+    """The gait file's run (scenarios/experiments/seed001_gait.yaml): table 1, its walks under
+    every variant; table 2, the 200 mm/s walk of our planner with one gait option changed at a
+    time (the file's `zmp.search`)."""
     zmp = data["zmp_experiment"]
     walk = data[zmp["walk"]]
     variants = list(zmp["variants"])
-    lines = ["| walk option changed | " + " | ".join(variants) + " |",
-             "|---|" + "---|" * len(variants)]
-    cells = []
-    for v in variants:
-        cell = describe_gait_cell(walk.get(v))
-        ensemble = walk.get(v, {}).get("ensemble")
-        if ensemble:
-            n = ensemble["size"]
-            cell += f"; {n} replays with 1e-7 rad noise: {ensemble['fell']} of {n} fall"
-            if ensemble["fell"]:
-                cell += ", at " + spread(ensemble["fall_s"], 2, "s")
-            cell += ", over 1 s to min(9 s, end) " + spread(ensemble["mean_speed_mm_s"], 0, "mm/s")
-        cells.append(cell)
+    lines = gait_walk_lines(data, variants) + [""]
+    lines += ["| walk option changed | " + " | ".join(variants) + " |",
+              "|---|" + "---|" * len(variants)]
     defaults = ", ".join(f"{k} {v:g}" for k, v in zmp["defaults"].items())
+    cells = [describe_gait_cell(walk.get(v)) for v in variants]
     lines.append(f"| none (the walk file: {defaults}) | " + " | ".join(cells) + " |")
     trials = {v: zmp["variants"][v]["trials"] for v in variants}
     for i, trial in enumerate(trials[variants[0]]):

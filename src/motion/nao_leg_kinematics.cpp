@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 #include "motoflex/model/body_kinematics.hpp"
@@ -59,8 +60,14 @@ NaoLegGeometry NaoLegGeometry::with_limits_of(const RobotModel& model) {
   return geometry;
 }
 
-NaoLegGeometry NaoLegGeometry::of(const RobotModel& model) {
+NaoLegGeometry NaoLegGeometry::of(const RobotModel& model, NaoJointLimits limits) {
   NaoLegGeometry geometry = with_limits_of(model);
+  if (limits == NaoJointLimits::kStops && !model.joint_stops) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    for (auto* side_limits : {&geometry.left_limits_rad, &geometry.right_limits_rad}) {
+      for (auto& joint : *side_limits) joint = {-kInf, kInf};
+    }
+  }
   const auto anchor = [&model](const char* name) {
     const ActuatorSpec& actuator = model.actuators[*model.actuator_index(name)];
     return model.joints[actuator.joint].anchor_W0_m;

@@ -22,8 +22,8 @@ std::size_t actuator(const RobotModel& model, const std::string& name) {
 
 }  // namespace
 
-NaoStance::NaoStance(const RobotModel& model)
-    : model_(&model), geometry_(NaoLegGeometry::of(model)) {
+NaoStance::NaoStance(const RobotModel& model, NaoJointLimits limits)
+    : model_(&model), geometry_(NaoLegGeometry::of(model, limits)) {
   for (int j = 0; j < 5; ++j) {
     left_index_[j] = actuator(model, std::string("L") + nao_leg::kJointNames[j]);
     right_index_[j] = actuator(model, std::string("R") + nao_leg::kJointNames[j]);

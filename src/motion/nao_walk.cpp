@@ -287,11 +287,15 @@ void check_standing(const NaoStance& stance, const NaoWalkParams& p) {
 
 NaoWalkPlan plan_nao_walk(const RobotModel& model, const NaoWalkParams& p) {
   if (const std::string error = p.validate(); !error.empty()) throw std::invalid_argument(error);
-  const NaoStance stance(model);
+  const NaoStance stance(model, p.joint_limits);
   check_standing(stance, p);
   NaoWalkPlan plan;
-  const std::string failure = try_plan(model, stance, p, plan);
+  std::string failure = try_plan(model, stance, p, plan);
   if (failure.empty()) return plan;
+  if (!model.joint_stops && p.joint_limits == NaoJointLimits::kUrdf &&
+      failure.find("URDF limits") != std::string::npos) {
+    failure += " (the robot has no joint stops: joint_limits: stops plans without them)";
+  }
 
   // Name the limit: the fastest walk with the other parameters unchanged, or, if not even
   // stepping in place works, the posture parameters.
@@ -321,7 +325,7 @@ double nao_max_walk_speed_mm_s(const RobotModel& model, const NaoWalkParams& par
   if (const std::string error = params.validate(); !error.empty()) {
     throw std::invalid_argument(error);
   }
-  const NaoStance stance(model);
+  const NaoStance stance(model, params.joint_limits);
   check_standing(stance, params);
   NaoWalkParams p = params;
   p.speed_mm_s = 0.0;

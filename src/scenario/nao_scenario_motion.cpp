@@ -27,6 +27,16 @@ bool read_side(const YamlValue& spec, const char* key, bool default_left) {
   return side == "left";
 }
 
+// `joint_limits: urdf | stops` (NaoWalkParams::joint_limits).
+NaoJointLimits read_joint_limits(const YamlValue& spec, NaoJointLimits fallback) {
+  const auto field = spec.find("joint_limits");
+  if (!field) return fallback;
+  const std::string value = field->as_string();
+  if (value == "urdf") return NaoJointLimits::kUrdf;
+  if (value == "stops") return NaoJointLimits::kStops;
+  field->fail("expected 'urdf' (the URDF's limits) or 'stops' (only those the robot simulates)");
+}
+
 // Turns a planner error ("<parameter> = <value>: ...", or anything else) into an InputError at
 // the parameter's key when the file sets it, at the motion's mapping otherwise.
 [[noreturn]] void fail_at_parameter(const YamlValue& spec, const std::exception& error) {
@@ -46,11 +56,16 @@ std::string format(const char* pattern, double a, double b) {
 
 NaoScenarioMotion walk_from_yaml(const YamlValue& spec, const RobotModel& model,
                                  const std::map<std::string, double>& walk_options) {
-  spec.require_keys_within({"speed_mm_s", "step_duration_s", "step_height_m",
-                            "double_support_ratio", "com_height_m", "foot_spacing_m", "start_s",
-                            "stop_s", "duration_s", "rate_hz", "zmp_offset_x_m", "zmp_offset_y_m",
-                            "zmp_travel_x_m", "zmp_transfer_smoothing", "toe_off_rad",
-                            "heel_strike_rad", "torso_offset_x_m", "preview_s", "first_swing"});
+  spec.require_keys_within({"speed_mm_s",       "step_duration_s",
+                            "step_height_m",    "double_support_ratio",
+                            "com_height_m",     "foot_spacing_m",
+                            "start_s",          "stop_s",
+                            "duration_s",       "rate_hz",
+                            "zmp_offset_x_m",   "zmp_offset_y_m",
+                            "zmp_travel_x_m",   "zmp_transfer_smoothing",
+                            "toe_off_rad",      "heel_strike_rad",
+                            "torso_offset_x_m", "preview_s",
+                            "first_swing",      "joint_limits"});
   NaoWalkParams p;
   const DoubleFields fields = p.numeric_fields();
   read_doubles(spec, fields);
@@ -66,6 +81,7 @@ NaoScenarioMotion walk_from_yaml(const YamlValue& spec, const RobotModel& model,
     changed += ", " + key + format(" %g", value, 0.0);
   }
   p.first_swing_left = read_side(spec, "first_swing", p.first_swing_left);
+  p.joint_limits = read_joint_limits(spec, p.joint_limits);
   try {
     auto plan = std::make_shared<const NaoWalkPlan>(plan_nao_walk(model, p));
     return {

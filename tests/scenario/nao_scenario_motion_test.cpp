@@ -100,6 +100,8 @@ TEST_F(NaoScenarioTest, InfeasibleValuesFailAtTheirField) {
             "speed_mm_s = 200"},
            {"  walk: {first_swing: middle}\n", 4, "motion.walk.first_swing",
             "expected 'left' or 'right'"},
+           {"  walk: {joint_limits: none}\n", 4, "motion.walk.joint_limits",
+            "expected 'urdf' (the URDF's limits) or 'stops'"},
            {"  walk:\n    speed_mm_s: 100\n    toe_off_rad: 1.5\n", 6, "motion.walk.toe_off_rad",
             "toe_off_rad = 1.5: must be within [0, 1] rad"},
            {"  walk:\n    speed_mm_s: 250\n    step_duration_s: 2\n    toe_off_rad: 0.8\n"

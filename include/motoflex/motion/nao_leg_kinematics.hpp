@@ -23,6 +23,13 @@ inline constexpr std::array<const char*, 5> kJointNames = {"HipRoll", "HipPitch"
 // Leg dimensions (nao.md §1.1, scenarios/robots/nao/nao.urdf) and the URDF joint limits
 // (nao.md §1.2; the right leg's limits are the mirror of the left ones except the slightly
 // asymmetric right ankle pitch).
+// Which joint limits bound a Nao leg's inverse kinematics in motion planning.
+enum class NaoJointLimits {
+  kUrdf,   // always the URDF's (the real Nao's ranges), whatever the simulation does with them
+  kStops,  // the URDF's only when the robot simulates them as stops (robot.yaml joint_stops);
+           // a robot without stops (the 2011 MoToFlex box robot) is bounded by its leg only
+};
+
 struct NaoLegGeometry {
   double hip_offset_y_m = 0.05;    // HipOffsetY: torso origin → hip joint, ±y
   double hip_offset_z_m = 0.085;   // HipOffsetZ: hip joint below the torso origin
@@ -56,7 +63,8 @@ struct NaoLegGeometry {
   // removes the last bits of the anchor differences, so the Nao's lengths come out as the
   // defaults above, exactly). hip_offset_z_m stays: it places the torso frame, a convention.
   // The 2011 MoToFlex box robot has tibia 0.100 m and foot height 0.046 m (nao.md §3.2).
-  static NaoLegGeometry of(const RobotModel& model);
+  // With NaoJointLimits::kStops and a model without joint stops every limit is infinite.
+  static NaoLegGeometry of(const RobotModel& model, NaoJointLimits limits = NaoJointLimits::kUrdf);
 };
 
 using NaoLegAngles = std::array<double, 5>;  // rad, nao_leg::Joint order

@@ -17,7 +17,8 @@ class NaoStance {
  public:
   // Throws std::invalid_argument unless the model has the ten Nao leg actuators (LHipRoll …
   // RAnkleRoll) and an upright torso frame at its build configuration.
-  explicit NaoStance(const RobotModel& model);
+  // `limits`: which joint limits bound the legs (NaoLegGeometry::of).
+  explicit NaoStance(const RobotModel& model, NaoJointLimits limits = NaoJointLimits::kUrdf);
 
   struct Legs {
     NaoLegAngles left{};

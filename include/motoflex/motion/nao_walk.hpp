@@ -78,6 +78,11 @@ struct NaoWalkParams {
   double heel_strike_rad = 0.0;
   double preview_s = 1.6;  // look-ahead of the ZMP preview controller (weights: nao_walk.cpp)
   bool first_swing_left = false;  // the right foot steps first
+  // Which joint limits the plan keeps to (scenario key `joint_limits: urdf | stops`): the URDF's
+  // (the real Nao's ranges) or only those the simulated robot has as stops. The 2011 MoToFlex
+  // box robot has none, like the original program, whose own 50 mm/s command file asks for
+  // AnkleRoll 0.46 rad, beyond the Nao's 0.398: with `stops` a walk planned for it may do so too.
+  NaoJointLimits joint_limits = NaoJointLimits::kUrdf;
 
   // The numeric options by their scenario key (speed_mm_s, step_duration_s, ...; every double
   // above), for the scenario reader and option searches.
