@@ -71,6 +71,16 @@ SERVOS = {
     "xl330_traj": dict(XL330, split="ours: the sin_time_square logs validate (kp 100 and 400), "
                                     "the other 9 train (kp 100, 400, 800; processed logs)",
                        held_out=lambda log: log.get("trajectory") == "sin_time_square"),
+    # A third: like the check on recordings we do not have (the kp 200 block and kp 800's
+    # sin_time_square held out, all the logs we have training), one gain's logs validate while
+    # the gains on both sides train, and the held-out trajectories all train at other gains: kp
+    # 400's sin_sin, lift_and_drop and up_and_down validate, the other 8 train (its
+    # sin_time_square among them).
+    "xl330_kp400": dict(XL330, split="kp 400's sin_sin, lift_and_drop and up_and_down validate, "
+                                     "the other 8 train (kp 100 and 800, and kp 400's "
+                                     "sin_time_square; processed logs)",
+                        held_out=lambda log: log.get("kp") == 400 and
+                        log.get("trajectory") != "sin_time_square"),
 }
 # The STS3250 has three logs we can hold out in turn (the fourth, sin_sin, is kept aside by the
 # data's curators): each split trains on two and validates on the third.

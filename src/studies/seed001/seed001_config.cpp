@@ -18,9 +18,14 @@ void require_unique(std::set<std::string>& names, const YamlValue& field) {
 }
 
 Seed001Walk read_walk(const YamlValue& item) {
-  item.require_keys_within({"name", "scenario", "commands", "step_s", "steady_s", "figure"});
+  item.require_keys_within(
+      {"name", "scenario", "commands", "step_s", "steady_s", "figure", "variants"});
   Seed001Walk walk;
   walk.name = item.at("name").as_string();
+  if (const auto variants = item.find("variants")) {
+    walk.variants = variants->as_string_list();
+    if (walk.variants.empty()) variants->fail("no variants listed (leave the key out for all)");
+  }
   walk.figure = item.get_string("figure", "");
   if (walk.figure != "" && walk.figure != "pitch" && walk.figure != "roll") {
     item.at("figure").fail("expected 'pitch' (Fig. 3) or 'roll' (Fig. 4)");
@@ -95,6 +100,13 @@ Seed001Config load_seed001_config(const std::string& path) {
     config.variants.push_back(std::move(variant));
   }
   if (config.variants.empty()) root.at("variants").fail("no variants listed");
+  for (const YamlValue& item : root.at("walks").items()) {
+    const auto variants = item.find("variants");
+    if (!variants) continue;
+    for (const std::string& name : variants->as_string_list()) {
+      if (!variant_names.count(name)) variants->fail("'" + name + "' is not a variant");
+    }
+  }
   if (const auto zmp = root.find("zmp")) {
     zmp->require_keys_within({"walk", "search", "variants"});
     config.zmp.walk = zmp->at("walk").as_string();
@@ -116,6 +128,12 @@ Seed001Config load_seed001_config(const std::string& path) {
     config.zmp.variants = zmp->at("variants").as_string_list();
     for (const std::string& name : config.zmp.variants) {
       if (!variant_names.count(name)) zmp->at("variants").fail("'" + name + "' is not a variant");
+      for (const Seed001Walk& walk : config.walks) {
+        if (walk.name == config.zmp.walk && !walk.runs_under(name)) {
+          zmp->at("variants")
+              .fail("'" + name + "' is not among walk '" + walk.name + "''s variants");
+        }
+      }
     }
   }
   return config;

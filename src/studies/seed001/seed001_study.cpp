@@ -244,6 +244,7 @@ Seed001Results run_seed001(const Seed001Config& config, int threads,
   for (const Seed001Walk& walk : config.walks) {
     const std::string walk_missing = walk_pending(walk);
     for (const Seed001Variant& variant : config.variants) {
+      if (!walk.runs_under(variant.name)) continue;
       Seed001Run run;
       run.walk = walk.name;
       run.variant = variant.name;

@@ -228,8 +228,49 @@ TEST(Seed001Study, ConfigErrorsNameTheirField) {
   } catch (const InputError& error) {
     EXPECT_NE(error.message().find("planned walk"), std::string::npos) << error.what();
   }
+  // A walk's own variant list names variants of the file, and the ZMP walk's includes the
+  // ZMP experiment's.
+  write_text(dir / "bad.yaml",
+             "walks:\n  - {name: w, scenario: walk.yaml, variants: [v, nobody]}\nvariants:\n"
+             "  - {name: v, pending: x}\n");
+  try {
+    load_seed001_config((dir / "bad.yaml").string());
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), "walks[0].variants") << error.what();
+    EXPECT_NE(error.message().find("'nobody' is not a variant"), std::string::npos) << error.what();
+  }
+  write_text(dir / "bad.yaml",
+             "walks:\n  - {name: w, scenario: walk.yaml, variants: [v]}\nvariants:\n"
+             "  - {name: v, pending: x}\n  - {name: u, pending: y}\n"
+             "zmp: {walk: w, search: {zmp_offset_y_m: [0.02]}, variants: [u]}\n");
+  try {
+    load_seed001_config((dir / "bad.yaml").string());
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(error.message().find("not among walk 'w''s variants"), std::string::npos)
+        << error.what();
+  }
   EXPECT_THROW(find_experiment_config("no_such_experiment"), InputError);
   EXPECT_NO_THROW(find_experiment_config("seed001"));
+}
+
+// A walk with its own variant list runs under those variants only: no run, not even a pending
+// one, for the others.
+TEST(Seed001Study, AWalkRunsUnderItsOwnVariantsOnly) {
+  const fs::path dir = fresh_dir("seed001_walk_variants");
+  write_study(dir);
+  write_text(
+      dir / "only.yaml",
+      "walks:\n  - {name: short_50_2, scenario: walk.yaml}\n"
+      "  - {name: again, scenario: walk.yaml, variants: [later]}\n"
+      "variants:\n  - {name: rigid, pending: not here}\n  - {name: later, pending: not yet}\n");
+  const Seed001Results results = run_seed001(load_seed001_config((dir / "only.yaml").string()), 1);
+  ASSERT_EQ(results.runs.size(), 3u);
+  EXPECT_EQ(results.runs[0].variant, "rigid");
+  EXPECT_EQ(results.runs[1].variant, "later");
+  EXPECT_EQ(results.runs[2].walk, "again");
+  EXPECT_EQ(results.runs[2].variant, "later");
 }
 
 }  // namespace

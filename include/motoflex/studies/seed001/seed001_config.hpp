@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,9 @@ namespace motoflex {
 //   walks:                             # each a scenario whose motion is a `walk`
 //     - {name: walk_200_1, scenario: ../walks/nao_walk_200_1.yaml, figure: pitch}
 //     - {name: walk_50_2, scenario: ../walks/nao_walk_50_2.yaml, figure: roll}
+//     # a walk for some of the variants only (by default it runs under every one):
+//     - {name: walk_50_2_dortmund, scenario: seed001/walk_50_2_dortmund.yaml,
+//        variants: [rigid_2011, ext_2011]}
 //     # or a command file replayed as it is (a 2011 MoToFlex command file or a joint log):
 //     - {name: commands_200_1, commands: UncompensatedTarget200.csv, step_s: 0.5,
 //        steady_s: [1.0, 9.0], figure: pitch}
@@ -31,6 +35,13 @@ struct Seed001Walk {
   std::string scenario_path;  // a walk of our planner (empty for a command file)
   std::string commands_path;  // a command file replayed instead (empty for a planned walk)
   std::string figure;         // "pitch" (seed 001 Fig. 3), "roll" (Fig. 4) or "" (no figure)
+  // The variants it runs under (`variants: [...]`, e.g. the robots it can be planned for);
+  // empty: every variant.
+  std::vector<std::string> variants;
+  bool runs_under(const std::string& variant) const {
+    return variants.empty() ||
+           std::find(variants.begin(), variants.end(), variant) != variants.end();
+  }
   // A command file has no plan to take these from: one step (half a gait cycle) and the window
   // of the steady speed (default: motoflex_2011.md §1's 1 s to 9 s).
   double step_s = 0.0;
