@@ -109,15 +109,18 @@ def spread(values, digits, unit):
     return f"{median:.{digits}f} {unit} (median; {known[0]:.{digits}f}-{known[-1]:.{digits}f})"
 
 
-def describe_ensemble(ensemble, commands):
-    """The perturbed replays (same model, commands + 1e-7 rad noise): how much is chaos."""
+def describe_ensemble(ensemble, commands, label=None):
+    """The perturbed replays (same model, commands + 1e-7 rad noise): how much is chaos. Their
+    mean speed from 1 s for a command file (or `commands`), else their steady speed; `label`
+    names it ("" for none)."""
     n = ensemble["size"]
     text = f"{n} replays with 1e-7 rad noise: {ensemble['fell']} of {n} fall"
     if ensemble["fell"]:
         text += ", at " + spread(ensemble["fall_s"], 2, "s")
     key = "mean_speed_mm_s" if commands else "speed_mm_s"
-    label = "mean speed 1-9 s" if commands else "steady speed"
-    return text + f", {label} " + spread(ensemble[key], 0, "mm/s")
+    if label is None:
+        label = "mean speed 1-9 s" if commands else "steady speed"
+    return text + ", " + (label + " " if label else "") + spread(ensemble[key], 0, "mm/s")
 
 
 def describe_zmp(variant, result):
@@ -171,12 +174,8 @@ def describe_gait_run(run):
     if run and run.get("fell") and abs(run.get("lateral_m") or 0.0) >= 0.005:
         cell += f", lateral {run['lateral_m']:.2f} m"
     ensemble = (run or {}).get("ensemble")
-    if ensemble:
-        n = ensemble["size"]
-        cell += f"; {n} replays with 1e-7 rad noise: {ensemble['fell']} of {n} fall"
-        if ensemble["fell"]:
-            cell += ", at " + spread(ensemble["fall_s"], 2, "s")
-        cell += ", " + spread(ensemble["mean_speed_mm_s"], 0, "mm/s")
+    if ensemble:  # the speed's measure is the cell's, named there
+        cell += "; " + describe_ensemble(ensemble, True, label="")
     return cell
 
 

@@ -20,9 +20,6 @@ inline constexpr std::array<const char*, 5> kJointNames = {"HipRoll", "HipPitch"
                                                            "AnklePitch", "AnkleRoll"};
 }  // namespace nao_leg
 
-// Leg dimensions (nao.md §1.1, scenarios/robots/nao/nao.urdf) and the URDF joint limits
-// (nao.md §1.2; the right leg's limits are the mirror of the left ones except the slightly
-// asymmetric right ankle pitch).
 // Which joint limits bound a Nao leg's inverse kinematics in motion planning.
 enum class NaoJointLimits {
   kUrdf,   // always the URDF's (the real Nao's ranges), whatever the simulation does with them
@@ -30,6 +27,9 @@ enum class NaoJointLimits {
            // a robot without stops (the 2011 MoToFlex box robot) is bounded by its leg only
 };
 
+// Leg dimensions (nao.md §1.1, scenarios/robots/nao/nao.urdf) and the URDF joint limits
+// (nao.md §1.2; the right leg's limits are the mirror of the left ones except the slightly
+// asymmetric right ankle pitch).
 struct NaoLegGeometry {
   double hip_offset_y_m = 0.05;    // HipOffsetY: torso origin → hip joint, ±y
   double hip_offset_z_m = 0.085;   // HipOffsetZ: hip joint below the torso origin

@@ -1,5 +1,6 @@
 #include "motoflex/studies/seed001/seed001_config.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
@@ -100,21 +101,24 @@ Seed001Config load_seed001_config(const std::string& path) {
     config.variants.push_back(std::move(variant));
   }
   if (config.variants.empty()) root.at("variants").fail("no variants listed");
-  for (const YamlValue& item : root.at("walks").items()) {
-    const auto variants = item.find("variants");
-    if (!variants) continue;
-    for (const std::string& name : variants->as_string_list()) {
-      if (!variant_names.count(name)) variants->fail("'" + name + "' is not a variant");
+  // Each walk's own variant list (read with the walk) names variants of the file.
+  const std::vector<YamlValue> walk_items = root.at("walks").items();
+  for (std::size_t w = 0; w < config.walks.size(); ++w) {
+    for (const std::string& name : config.walks[w].variants) {
+      if (!variant_names.count(name)) {
+        walk_items[w].at("variants").fail("'" + name + "' is not a variant");
+      }
     }
   }
   if (const auto zmp = root.find("zmp")) {
     zmp->require_keys_within({"walk", "search", "variants"});
     config.zmp.walk = zmp->at("walk").as_string();
     if (!walk_names.count(config.zmp.walk)) zmp->at("walk").fail("not one of the walks");
-    for (const Seed001Walk& walk : config.walks) {
-      if (walk.name == config.zmp.walk && walk.replays_commands()) {
-        zmp->at("walk").fail("the ZMP experiment needs a planned walk, not a command file");
-      }
+    const Seed001Walk& zmp_walk =
+        *std::find_if(config.walks.begin(), config.walks.end(),
+                      [&config](const Seed001Walk& walk) { return walk.name == config.zmp.walk; });
+    if (zmp_walk.replays_commands()) {
+      zmp->at("walk").fail("the ZMP experiment needs a planned walk, not a command file");
     }
     for (const auto& [option, values] : zmp->at("search").entries()) {
       if (!NaoWalkParams{}.numeric(option)) {
@@ -128,11 +132,9 @@ Seed001Config load_seed001_config(const std::string& path) {
     config.zmp.variants = zmp->at("variants").as_string_list();
     for (const std::string& name : config.zmp.variants) {
       if (!variant_names.count(name)) zmp->at("variants").fail("'" + name + "' is not a variant");
-      for (const Seed001Walk& walk : config.walks) {
-        if (walk.name == config.zmp.walk && !walk.runs_under(name)) {
-          zmp->at("variants")
-              .fail("'" + name + "' is not among walk '" + walk.name + "''s variants");
-        }
+      if (!zmp_walk.runs_under(name)) {
+        zmp->at("variants")
+            .fail("'" + name + "' is not among walk '" + zmp_walk.name + "''s variants");
       }
     }
   }
