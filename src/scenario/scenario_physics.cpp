@@ -49,7 +49,7 @@ void read_flex_model(const YamlValue& physics, RolloutOptions& rollout) {
 void read_physics_section(const YamlValue& physics, ScenarioPhysics& out) {
   physics.require_keys_within({"dt_s", "solver", "quickstep_iterations", "quickstep_w",
                                "gear_substeps", "flex_sub_bodies", "flex_model", "max_contacts",
-                               "universal_joints", "settle_s", "hold_torso"});
+                               "universal_joints", "settle_s", "hold_torso", "float_state"});
   RolloutOptions& rollout = out.rollout;
   StructureOptions& structure = out.structure;
   ErrorCollector errors;
@@ -99,6 +99,7 @@ void read_physics_section(const YamlValue& physics, ScenarioPhysics& out) {
     }
   });
   errors.check([&] { rollout.hold_torso = physics.get_bool("hold_torso", rollout.hold_torso); });
+  errors.check([&] { rollout.float_state = physics.get_bool("float_state", rollout.float_state); });
   errors.throw_if_any();
 }
 
@@ -108,7 +109,7 @@ ScenarioPhysics read_scenario_physics(const std::optional<YamlValue>& physics,
                                       const ScenarioOverrides& overrides) {
   ScenarioPhysics out;
   if (physics) read_physics_section(*physics, out);
-  if (overrides.physics) read_physics_section(*overrides.physics, out);
+  for (const YamlValue& section : overrides.physics) read_physics_section(section, out);
   if (overrides.solver) out.rollout.solver = *overrides.solver;
   if (overrides.flex_sub_bodies) out.structure.flex_sub_bodies = *overrides.flex_sub_bodies;
   if (overrides.gear_substeps) out.rollout.gear_substeps = *overrides.gear_substeps;

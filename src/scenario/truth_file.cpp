@@ -37,7 +37,7 @@ TruthFile load_truth_file(const std::string& path) {
   // The robot and physics go on top of each recording's scenario (the scenario loader checks
   // their keys and values, naming this file).
   truth.overrides.robot = root.find("robot");
-  truth.overrides.physics = root.find("physics");
+  if (const auto physics = root.find("physics")) truth.overrides.physics.push_back(*physics);
   truth.parameters = root.find("parameters");
   for (const YamlValue& item : root.at("recordings").items()) {
     item.require_keys_within({"name", "scenario", "parameters"});
@@ -56,13 +56,14 @@ TruthFile load_truth_file(const std::string& path) {
 Scenario truth_recording_scenario(const TruthFile& truth, std::size_t index,
                                   const ScenarioOverrides& extra) {
   const TruthRecording& recording = truth.recordings.at(index);
-  // The caller's overrides, with the truth's robot, servo and physics where the caller sets
-  // none (a truth file sets only these; the caller's single physics values still win, being
-  // applied after the truth's physics section).
+  // The caller's overrides, with the truth's robot and servo where the caller sets none (a truth
+  // file sets only these and physics). The truth's physics section is read first and the
+  // caller's sections on top of it; the caller's single physics values win over both.
   ScenarioOverrides overrides = extra;
   if (!overrides.servo) overrides.servo = truth.overrides.servo;
   if (!overrides.robot) overrides.robot = truth.overrides.robot;
-  if (!overrides.physics) overrides.physics = truth.overrides.physics;
+  overrides.physics = truth.overrides.physics;
+  overrides.physics.insert(overrides.physics.end(), extra.physics.begin(), extra.physics.end());
   // The truth values go on top of the scenario's; a parameter file given by the caller wins.
   overrides.parameters_json.reset();
   Scenario scenario = load_scenario(recording.scenario_path, overrides);

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "axis_rows.hpp"
+#include "float_body_state.hpp"
 #include "ground_colliders.hpp"
 #include "mimic_coupling.hpp"
 #include "motoflex/core/error.hpp"
@@ -721,6 +722,11 @@ bool Rollout::step(const double* command_now_rad, const double* command_next_rad
         break;
     }
     s.step_interrupted = false;
+    if (s.options.float_state) {
+      for (dBodyID body : s.bodies) {
+        if (body != nullptr) detail::round_body_state_to_float(body);
+      }
+    }
     s.read_foot_forces();
     dJointGroupEmpty(s.contact_group);
     if (!ok) throw ModelError("ODE ran out of memory in the step");

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "motoflex/io/yaml_reader.hpp"
 #include "motoflex/model/parameters.hpp"
@@ -23,9 +24,10 @@ namespace motoflex {
 //   seed: 1                      # sensor-noise stream
 //   physics: {dt_s: 0.001, solver: step, quickstep_iterations: 20, quickstep_w: 1.3,
 //             gear_substeps: 100, flex_sub_bodies: 1, flex_model: implicit, max_contacts: 4,
-//             universal_joints: true, settle_s: 0.5, hold_torso: false}
+//             universal_joints: true, settle_s: 0.5, hold_torso: false, float_state: false}
 //            # flex_model: implicit | explicit_cfm (FlexModel, rollout.hpp); max_contacts: per
-//            # foot box and step; quickstep_w: SOR factor of solver: quick
+//            # foot box and step; quickstep_w: SOR factor of solver: quick; float_state: the
+//            # bodies' state rounded to single precision after each step (the 2011 program's)
 //   motion:                      # exactly one of:
 //     log: ../reference_data/walk.csv        # replay the .cmd columns of a joint log
 //     keyframes: {rate_hz: 100, frames: [{t_s: 0, pose: {LKneePitch: 0.5}}, ...]}
@@ -64,9 +66,9 @@ struct ScenarioOverrides {
   std::map<std::string, double> walk_options;
   std::optional<std::string> parameters_json;  // --params P.json
   bool allow_out_of_bounds = false;            // --allow-out-of-bounds (for parameters_json)
-  // A `physics:` section read on top of the scenario's (a truth file's), before the single
-  // overrides below.
-  std::optional<YamlValue> physics;
+  // `physics:` sections read on top of the scenario's in this order (a truth file's, then e.g.
+  // an experiment variant's), before the single overrides below.
+  std::vector<YamlValue> physics;
   // A `robot:` value used instead of the scenario's (a truth file's; its path resolves against
   // the file it was written in).
   std::optional<YamlValue> robot;

@@ -44,6 +44,9 @@ struct RolloutOptions {
   int quickstep_iterations = 20;  // dWorldQuickStep only
   double quickstep_w = 1.3;       // dWorldQuickStep's SOR over-relaxation (ODE's default 1.3)
   FlexModel flex_model = FlexModel::kImplicit;
+  // Round every body's stored state (position, orientation, velocities) to single precision
+  // after each step, as the 2011 program's float build of ODE keeps it (motoflex_2011.md §1).
+  bool float_state = false;
   // A cap on the contact points per foot shape and step, below each shape's own limit (box and
   // cylinder 4, capsule 2, sphere 1, mesh 8); the default caps nothing. ODE's box-plane
   // collider returns at most 4, so the 2011 program's 10 per pair (motoflex_2011.md §2.10)

@@ -85,7 +85,7 @@ Seed001Config load_seed001_config(const std::string& path) {
   if (config.walks.empty()) root.at("walks").fail("no walks listed");
   std::set<std::string> variant_names;
   for (const YamlValue& item : root.at("variants").items()) {
-    item.require_keys_within({"name", "scenario", "params", "pending"});
+    item.require_keys_within({"name", "scenario", "params", "physics", "pending"});
     require_unique(variant_names, item.at("name"));
     Seed001Variant variant;
     variant.name = item.at("name").as_string();
@@ -95,8 +95,9 @@ Seed001Config load_seed001_config(const std::string& path) {
       if (const auto params = item.find("params")) {
         variant.params_path = params->resolve_path(params->as_string());
       }
-    } else if (item.has("scenario") || item.has("params")) {
-      item.at("pending").fail("a pending variant names no scenario or params");
+      variant.physics = item.find("physics");
+    } else if (item.has("scenario") || item.has("params") || item.has("physics")) {
+      item.at("pending").fail("a pending variant names no scenario, params or physics");
     }
     config.variants.push_back(std::move(variant));
   }

@@ -40,6 +40,7 @@ Scenario load_variant_walk(const Seed001Variant& variant, const Seed001Walk& wal
     overrides.walk_options = walk_options;
   }
   if (!variant.params_path.empty()) overrides.parameters_json = variant.params_path;
+  if (variant.physics) overrides.physics.push_back(*variant.physics);
   Scenario scenario = load_scenario_or_truth(variant.scenario_path, overrides);
   if (!walk.replays_commands() && !scenario.walk_plan) {
     throw InputError(walk.scenario_path, 0, "motion", "the seed-001 experiment needs a `walk`");

@@ -273,5 +273,40 @@ TEST(Seed001Study, AWalkRunsUnderItsOwnVariantsOnly) {
   EXPECT_EQ(results.runs[2].variant, "later");
 }
 
+// A variant's `physics:` keys go on top of its scenario's: the same crouch on the 2011 box robot
+// with the bodies' state rounded to floats (physics.float_state) is another rollout, equal to
+// float resolution; a pending variant has no physics, and a bad key is the variant's error.
+TEST(Seed001Study, AVariantsPhysicsKeysGoOnTopOfItsScenario) {
+  const fs::path dir = fresh_dir("seed001_variant_physics");
+  const std::string rigid_2011 =
+      std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/experiments/seed001/rigid_2011.yaml";
+  write_crouch_commands(dir / "crouch.csv");
+  write_text(dir / "study.yaml",
+             "walks:\n  - {name: crouch, commands: crouch.csv, step_s: 0.5, steady_s: [0.5, "
+             "1.5]}\nvariants:\n  - {name: exact, scenario: " +
+                 rigid_2011 + "}\n  - {name: float, scenario: " + rigid_2011 +
+                 ", physics: {float_state: true}}\n");
+  const Seed001Config config = load_seed001_config((dir / "study.yaml").string());
+  ASSERT_TRUE(config.variants[1].physics.has_value());
+  EXPECT_FALSE(config.variants[0].physics.has_value());
+  const Seed001Results results = run_seed001(config, 2);
+  ASSERT_EQ(results.runs.size(), 2u);
+  const Seed001Run& exact = results.runs[0];
+  const Seed001Run& rounded = results.runs[1];
+  ASSERT_TRUE(exact.pending.empty() && rounded.pending.empty());
+  EXPECT_FALSE(rounded.fell);
+  EXPECT_NE(rounded.lateral_m, exact.lateral_m);
+  EXPECT_NEAR(rounded.speed_mm_s, exact.speed_mm_s, 1e-2);
+  write_text(dir / "bad.yaml",
+             "walks:\n  - {name: w, commands: c.csv, step_s: 1}\nvariants:\n"
+             "  - {name: v, pending: x, physics: {float_state: true}}\n");
+  EXPECT_THROW(load_seed001_config((dir / "bad.yaml").string()), InputError);
+  write_text(dir / "bad.yaml",
+             "walks:\n  - {name: crouch, commands: crouch.csv, step_s: 0.5}\nvariants:\n"
+             "  - {name: v, scenario: " +
+                 rigid_2011 + ", physics: {float_state: maybe}}\n");
+  EXPECT_THROW(run_seed001(load_seed001_config((dir / "bad.yaml").string()), 1), InputError);
+}
+
 }  // namespace
 }  // namespace motoflex::testing

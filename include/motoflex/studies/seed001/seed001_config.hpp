@@ -1,8 +1,11 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "motoflex/io/yaml_reader.hpp"
 
 namespace motoflex {
 
@@ -22,6 +25,9 @@ namespace motoflex {
 //     - {name: rigid, scenario: seed001/rigid.yaml}            #   parameters); its own motion,
 //     - {name: ext_physical, scenario: ../truth/nao_motoflex.yaml, params: fitted.json}
 //     - {name: ext_2011, pending: "why it cannot run yet"}     #   if any, is replaced by the walk
+//     # physics keys set on top of the scenario's (ScenarioOverrides::physics):
+//     - {name: ext_2011_float, scenario: ../truth/nao_motoflex_2011.yaml,
+//        physics: {float_state: true}}
 //   zmp:                               # the reference-ZMP experiment (seed 001 §5, last para.)
 //     walk: walk_50_2                  # one of the walks
 //     search:                          # numeric walk options (NaoWalkParams) and the values
@@ -52,9 +58,10 @@ struct Seed001Walk {
 
 struct Seed001Variant {
   std::string name;
-  std::string scenario_path;  // empty when pending
-  std::string params_path;    // optional parameter JSON applied on top
-  std::string pending;        // non-empty: not runnable yet, and why
+  std::string scenario_path;         // empty when pending
+  std::string params_path;           // optional parameter JSON applied on top
+  std::optional<YamlValue> physics;  // optional `physics:` keys applied on top
+  std::string pending;               // non-empty: not runnable yet, and why
 };
 
 // One setting the ZMP experiment tries: walk option `option` at `value`.
