@@ -93,6 +93,24 @@ def regress(logs, drive):
     return coefficients, float(np.sqrt(np.mean(residual ** 2))), float(np.std(y)), len(y)
 
 
+# Which samples each column of the supply table pools: torque off, then by |duty| with the
+# torque on.
+SUPPLY_KINDS = [
+    lambda log: ~log["on"],
+    lambda log: log["on"] & (np.abs(log["duty"]) < 0.05),
+    lambda log: log["on"] & (np.abs(log["duty"]) > 0.1) & (np.abs(log["duty"]) < 0.9),
+    lambda log: log["on"] & (np.abs(log["duty"]) > 0.98),
+]
+
+
+def supply_reading(logs, kind):
+    """Mean ± SD of the logged supply over the samples `kind` selects, and their count."""
+    volts = np.concatenate([log["supply"][kind(log)] for log in logs])
+    if not len(volts):
+        return "—"
+    return "%.2f ± %.2f (%d)" % (volts.mean(), volts.std(), len(volts))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", default=os.path.join(ROOT, "benchmarks",
@@ -130,6 +148,14 @@ def main():
     for drive in DRIVES:
         lines.append("| %s | %s |" % (drive.replace("|", "\\|"), " | ".join(
             "%.4f" % fits[(name, drive)][1] for name, _ in subsets)))
+    lines += ["", "The supply reading (input_volts, V) by drive: mean ± standard deviation over the "
+              "samples of each kind, every log of a gain pooled. With the bridge switching "
+              "(partial duty) the register samples the PWM ripple; at full duty it shows the "
+              "sag under the stall current.", "",
+              "| logs | torque off | duty < 5 % | duty 10-90 % | duty > 98 % |", "|---|---|---|---|---|"]
+    for name, chosen in subsets:
+        lines.append("| %s | %s |" % (name, " | ".join(
+            supply_reading(chosen, kind) for kind in SUPPLY_KINDS)))
     text = "\n".join(lines) + "\n"
     os.makedirs(args.results, exist_ok=True)
     with open(os.path.join(args.results, "xl330_torque_regression.md"), "w") as f:
