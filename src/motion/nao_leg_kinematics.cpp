@@ -62,6 +62,7 @@ NaoLegGeometry NaoLegGeometry::with_limits_of(const RobotModel& model) {
 
 NaoLegGeometry NaoLegGeometry::of(const RobotModel& model, NaoJointLimits limits) {
   NaoLegGeometry geometry = with_limits_of(model);
+  geometry.limits_without_stops = limits == NaoJointLimits::kUrdf && !model.joint_stops;
   if (limits == NaoJointLimits::kStops && !model.joint_stops) {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     for (auto* side_limits : {&geometry.left_limits_rad, &geometry.right_limits_rad}) {
@@ -149,9 +150,13 @@ void check_limits(LegSide side, const std::string& leg, const NaoLegAngles& q,
   const auto& limits = g.limits(side);
   for (int j = 0; j < 5; ++j) {
     if (q[j] < limits[j][0] - kLimitTolerance_rad || q[j] > limits[j][1] + kLimitTolerance_rad) {
-      throw NaoLegUnreachable(leg + joint_name(side, j) +
-                              format(" = %.4f rad is outside its URDF limits [%.4f, %.4f]", q[j],
-                                     limits[j][0], limits[j][1]));
+      throw NaoLegUnreachable(
+          leg + joint_name(side, j) +
+          format(" = %.4f rad is outside its URDF limits [%.4f, %.4f]", q[j], limits[j][0],
+                 limits[j][1]) +
+          (g.limits_without_stops
+               ? " (the robot has no joint stops: joint_limits: stops plans without them)"
+               : ""));
     }
   }
 }

@@ -290,12 +290,8 @@ NaoWalkPlan plan_nao_walk(const RobotModel& model, const NaoWalkParams& p) {
   const NaoStance stance(model, p.joint_limits);
   check_standing(stance, p);
   NaoWalkPlan plan;
-  std::string failure = try_plan(model, stance, p, plan);
+  const std::string failure = try_plan(model, stance, p, plan);
   if (failure.empty()) return plan;
-  if (!model.joint_stops && p.joint_limits == NaoJointLimits::kUrdf &&
-      failure.find("URDF limits") != std::string::npos) {
-    failure += " (the robot has no joint stops: joint_limits: stops plans without them)";
-  }
 
   // Name the limit: the fastest walk with the other parameters unchanged, or, if not even
   // stepping in place works, the posture parameters.

@@ -48,6 +48,10 @@ struct NaoLegGeometry {
                                                             {-1.1863, 0.932006},
                                                             {-0.768992, 0.397761}}};
 
+  // The limits are the URDF's on a robot that does not simulate them as stops (of() with
+  // NaoJointLimits::kUrdf): a limit error then names the planner option that plans without them.
+  bool limits_without_stops = false;
+
   const std::array<std::array<double, 2>, 5>& limits(LegSide side) const {
     return side == LegSide::kLeft ? left_limits_rad : right_limits_rad;
   }

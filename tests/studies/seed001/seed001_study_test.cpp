@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
+#include <string>
 
 #include "cli/cli_test_support.hpp"
 #include "motoflex/core/error.hpp"
@@ -192,17 +194,26 @@ TEST(Seed001Study, ACommandFileWalkReplaysTheFileWithItsOwnWindowAndAnEnsemble) 
   EXPECT_THROW(set_walk_command_file(config, "nobody", "x.csv"), InputError);
 }
 
+// Writes `text` as dir/bad.yaml and returns the InputError loading it throws (a test failure,
+// and nothing, when it loads).
+std::optional<InputError> config_error(const fs::path& dir, const std::string& text) {
+  write_text(dir / "bad.yaml", text);
+  try {
+    load_seed001_config((dir / "bad.yaml").string());
+  } catch (const InputError& error) {
+    return error;
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return std::nullopt;
+}
+
 TEST(Seed001Study, ConfigErrorsNameTheirField) {
   const fs::path dir = fresh_dir("seed001_config");
   write_study(dir);
-  write_text(dir / "bad.yaml",
-             "walks:\n  - {name: w, scenario: walk.yaml, figure: yaw}\nvariants: []\n");
-  try {
-    load_seed001_config((dir / "bad.yaml").string());
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& error) {
-    EXPECT_EQ(error.line(), 2) << error.what();
-    EXPECT_NE(error.message().find("pitch"), std::string::npos) << error.what();
+  if (const auto error = config_error(
+          dir, "walks:\n  - {name: w, scenario: walk.yaml, figure: yaw}\nvariants: []\n")) {
+    EXPECT_EQ(error->line(), 2) << error->what();
+    EXPECT_NE(error->message().find("pitch"), std::string::npos) << error->what();
   }
   write_text(dir / "bad.yaml",
              "walks:\n  - {name: w, scenario: walk.yaml}\nvariants:\n"
@@ -218,38 +229,30 @@ TEST(Seed001Study, ConfigErrorsNameTheirField) {
   write_text(dir / "bad.yaml",
              "walks:\n  - {name: w, commands: c.csv}\nvariants:\n  - {name: v, pending: x}\n");
   EXPECT_THROW(load_seed001_config((dir / "bad.yaml").string()), InputError);
-  write_text(dir / "bad.yaml",
-             "walks:\n  - {name: w, commands: c.csv, step_s: 1}\nvariants:\n"
-             "  - {name: v, pending: x}\nzmp: {walk: w, search: {zmp_offset_y_m: [0.02]}, "
-             "variants: [v]}\n");
-  try {
-    load_seed001_config((dir / "bad.yaml").string());
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& error) {
-    EXPECT_NE(error.message().find("planned walk"), std::string::npos) << error.what();
+  if (const auto error = config_error(
+          dir,
+          "walks:\n  - {name: w, commands: c.csv, step_s: 1}\nvariants:\n"
+          "  - {name: v, pending: x}\nzmp: {walk: w, search: {zmp_offset_y_m: [0.02]}, "
+          "variants: [v]}\n")) {
+    EXPECT_NE(error->message().find("planned walk"), std::string::npos) << error->what();
   }
   // A walk's own variant list names variants of the file, and the ZMP walk's includes the
   // ZMP experiment's.
-  write_text(dir / "bad.yaml",
-             "walks:\n  - {name: w, scenario: walk.yaml, variants: [v, nobody]}\nvariants:\n"
-             "  - {name: v, pending: x}\n");
-  try {
-    load_seed001_config((dir / "bad.yaml").string());
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& error) {
-    EXPECT_EQ(error.field(), "walks[0].variants") << error.what();
-    EXPECT_NE(error.message().find("'nobody' is not a variant"), std::string::npos) << error.what();
+  if (const auto error = config_error(
+          dir,
+          "walks:\n  - {name: w, scenario: walk.yaml, variants: [v, nobody]}\nvariants:\n"
+          "  - {name: v, pending: x}\n")) {
+    EXPECT_EQ(error->field(), "walks[0].variants") << error->what();
+    EXPECT_NE(error->message().find("'nobody' is not a variant"), std::string::npos)
+        << error->what();
   }
-  write_text(dir / "bad.yaml",
-             "walks:\n  - {name: w, scenario: walk.yaml, variants: [v]}\nvariants:\n"
-             "  - {name: v, pending: x}\n  - {name: u, pending: y}\n"
-             "zmp: {walk: w, search: {zmp_offset_y_m: [0.02]}, variants: [u]}\n");
-  try {
-    load_seed001_config((dir / "bad.yaml").string());
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& error) {
-    EXPECT_NE(error.message().find("not among walk 'w''s variants"), std::string::npos)
-        << error.what();
+  if (const auto error =
+          config_error(dir,
+                       "walks:\n  - {name: w, scenario: walk.yaml, variants: [v]}\nvariants:\n"
+                       "  - {name: v, pending: x}\n  - {name: u, pending: y}\n"
+                       "zmp: {walk: w, search: {zmp_offset_y_m: [0.02]}, variants: [u]}\n")) {
+    EXPECT_NE(error->message().find("not among walk 'w''s variants"), std::string::npos)
+        << error->what();
   }
   EXPECT_THROW(find_experiment_config("no_such_experiment"), InputError);
   EXPECT_NO_THROW(find_experiment_config("seed001"));
