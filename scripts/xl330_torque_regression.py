@@ -111,6 +111,15 @@ def supply_reading(logs, kind):
     return "%.2f ± %.2f (%d)" % (volts.mean(), volts.std(), len(volts))
 
 
+def write_report(folder, file_name, lines):
+    """The report's lines into FOLDER/FILE_NAME (the folder made if need be), and to stdout."""
+    text = "\n".join(lines) + "\n"
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, file_name), "w") as f:
+        f.write(text)
+    print(text)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", default=os.path.join(ROOT, "benchmarks",
@@ -156,11 +165,7 @@ def main():
     for name, chosen in subsets:
         lines.append("| %s | %s |" % (name, " | ".join(
             supply_reading(chosen, kind) for kind in SUPPLY_KINDS)))
-    text = "\n".join(lines) + "\n"
-    os.makedirs(args.results, exist_ok=True)
-    with open(os.path.join(args.results, "xl330_torque_regression.md"), "w") as f:
-        f.write(text)
-    print(text)
+    write_report(args.results, "xl330_torque_regression.md", lines)
     return 0
 
 
