@@ -39,6 +39,7 @@ MIN_GOAL_GAP_RAD = 0.15
 
 
 def load(path):
+    """One raw log as arrays, its time from the first sample and its drive in volts."""
     with open(path) as f:
         log = json.load(f)
     entries = log["entries"]
@@ -72,6 +73,7 @@ def holds(log):
 
 
 def hold_end(log, end):
+    """What ended the hold whose last sample is end - 1."""
     if end >= len(log["angle"]):
         return "log ends"
     if not log["on"][end]:

@@ -301,9 +301,10 @@ EffectRanking rank_effects(const FitConfig& config, const ParameterSet& current,
   } else {
     for (const std::string& name : candidates) effects.push_back(&find_effect(name));
   }
-  std::set<std::string> free_names;
+  std::set<std::string> free_names, fixed_names;
   for (const auto& p : config.free_parameters)
     free_names.insert(p.targets.begin(), p.targets.end());
+  for (const auto& [name, value] : config.fixed) fixed_names.insert(name);
 
   EffectRanking ranking;
   const Residual residual = residual_of(train, current);
@@ -323,6 +324,10 @@ EffectRanking rank_effects(const FitConfig& config, const ParameterSet& current,
       score.status = "not applicable";
     } else if (effect_covered_by(*effect, current, free_names)) {
       score.status = "in model";
+    } else if (effect_covered_by(*effect, current, fixed_names)) {
+      // The config holds every parameter of it at a value of its own (a measured offset, say):
+      // a refit could free nothing, and a fit listing it is an error (add_effect_parameters).
+      score.status = "held fixed";
     } else if (effect->flex_sub_bodies > model.structure.flex_sub_bodies) {
       auto& variant = variants[effect->flex_sub_bodies];
       if (!variant) variant = variant_fitness(config, effect->flex_sub_bodies);

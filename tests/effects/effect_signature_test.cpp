@@ -131,5 +131,29 @@ TEST(EffectSignature, EffectsTheFitAlreadyFreesOrTheRobotLacksAreNotCandidates) 
   }
 }
 
+// A config that holds every parameter of an effect at a value of its own (here a mounting offset
+// measured elsewhere) leaves the loop nothing to free: the effect is not a candidate, so the
+// loop does not refit it (a fit listing it with its parameters fixed is an error, which ended a
+// loop on real XL330 logs before this).
+TEST(EffectSignature, EffectsWhoseParametersTheConfigFixesAreNotCandidates) {
+  const auto dir = fresh_dir("signature_held_fixed");
+  const FitConfig config = load_fit_config(write_hidden_bench_fit(
+      dir, "none", "{}", "fixed:\n  joint.pendulum.mounting_offset_rad: -0.03\n"));
+  const ParameterSet current = hidden_truth("none", "train/chirp", config.space->base(), true);
+  const EffectRanking ranking = rank_effects(config, current, {}, 2);
+  bool seen = false;
+  for (const EffectScore& s : ranking.scores) {
+    if (s.effect == "mounting_offset") {
+      seen = true;
+      EXPECT_EQ(s.status, "held fixed");
+      EXPECT_FALSE(s.scored());
+    }
+    if (s.effect == "encoder_offset") {
+      EXPECT_TRUE(s.scored()) << s.status;
+    }
+  }
+  EXPECT_TRUE(seen);
+}
+
 }  // namespace
 }  // namespace motoflex::testing
