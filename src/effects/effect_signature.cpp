@@ -301,10 +301,11 @@ EffectRanking rank_effects(const FitConfig& config, const ParameterSet& current,
   } else {
     for (const std::string& name : candidates) effects.push_back(&find_effect(name));
   }
-  std::set<std::string> free_names, fixed_names;
+  std::set<std::string> free_names;
   for (const auto& p : config.free_parameters)
     free_names.insert(p.targets.begin(), p.targets.end());
-  for (const auto& [name, value] : config.fixed) fixed_names.insert(name);
+  std::set<std::string> free_or_fixed = free_names;
+  for (const auto& [name, value] : config.fixed) free_or_fixed.insert(name);
 
   EffectRanking ranking;
   const Residual residual = residual_of(train, current);
@@ -324,9 +325,10 @@ EffectRanking rank_effects(const FitConfig& config, const ParameterSet& current,
       score.status = "not applicable";
     } else if (effect_covered_by(*effect, current, free_names)) {
       score.status = "in model";
-    } else if (effect_covered_by(*effect, current, fixed_names)) {
-      // The config holds every parameter of it at a value of its own (a measured offset, say):
-      // a refit could free nothing, and a fit listing it is an error (add_effect_parameters).
+    } else if (effect_covered_by(*effect, current, free_or_fixed)) {
+      // The config holds its parameters at values of its own (a measured offset, say), or those
+      // it does not hold are free already: a refit could free nothing, and a fit listing an
+      // effect whose parameters are all fixed is an error (add_effect_parameters).
       score.status = "held fixed";
     } else if (effect->flex_sub_bodies > model.structure.flex_sub_bodies) {
       auto& variant = variants[effect->flex_sub_bodies];

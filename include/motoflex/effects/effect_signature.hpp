@@ -26,7 +26,8 @@ namespace motoflex {
 struct EffectScore {
   std::string effect;
   // "scored", or why not: "in model" (its parameters are already free), "held fixed" (the
-  // config's `fixed` holds all of them), "not applicable", "no parameters", "probe failed: ...".
+  // config's `fixed` holds those that are not free), "not applicable", "no parameters",
+  // "probe failed: ...".
   std::string status;
   double explained = 0.0;  // 1 − RSS₁/RSS₀
   double delta_bic = 0.0;
