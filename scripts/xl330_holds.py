@@ -20,43 +20,24 @@ Usage: xl330_holds.py [--results benchmarks/xl330_holds]
 Writes RESULTS/xl330_holds.md. Skips (exit 0) when ../shared/data/bam is absent.
 """
 import argparse
-import glob
-import json
 import os
 import sys
 import time
 
 import numpy as np
 
-# The raw logs' constants, the PWM register's sign and the report writer of the torque
-# regression.
-from xl330_torque_regression import (BAM, GRAVITY_M_S2, PWM_FULL_SCALE, ROOT, signed_pwm,
-                                     write_report)
+# The torque regression's raw-log loader (time, angle, the servo's speed reading, goal, drive in
+# volts, torque on), its constants and its report writer.
+from xl330_torque_regression import GRAVITY_M_S2, PWM_FULL_SCALE, ROOT, raw_logs, write_report
 
 STILL_RAD_S = 0.08      # |θ̇| below this is standing still (3 counts of the velocity register)
 MIN_HOLD_S = 0.08
 MIN_GOAL_GAP_RAD = 0.15
 
 
-def load(path):
-    """One raw log as arrays, its time from the first sample and its drive in volts."""
-    with open(path) as f:
-        log = json.load(f)
-    entries = log["entries"]
-    return dict(kp=log["kp"], trajectory=log["trajectory"], mass=log["mass"],
-                length=log["length"],
-                time_s=np.array([e["timestamp"] for e in entries]) - entries[0]["timestamp"],
-                angle=np.array([e["position"] for e in entries]),
-                rate=np.array([e["speed"] for e in entries]),
-                goal=np.array([e["goal_position"] for e in entries]),
-                drive_v=np.array([signed_pwm(e["load"]) * e["input_volts"] for e in entries]) /
-                PWM_FULL_SCALE,
-                on=np.array([bool(e["torque_enable"]) for e in entries]))
-
-
 def holds(log):
     """(start, end) sample indices of each hold, end exclusive."""
-    still = log["on"] & (np.abs(log["rate"]) < STILL_RAD_S)
+    still = log["on"] & (np.abs(log["speed"]) < STILL_RAD_S)
     away = np.abs(log["goal"] - log["angle"]) > MIN_GOAL_GAP_RAD
     found, i, n = [], 0, len(still)
     while i < n:
@@ -79,7 +60,7 @@ def hold_end(log, end):
     if not log["on"][end]:
         return "torque off"
     # It moves again: towards the goal (broke away) or back (the goal came back past it).
-    towards = np.sign(log["rate"][end]) == np.sign(log["goal"][end] - log["angle"][end])
+    towards = np.sign(log["speed"][end]) == np.sign(log["goal"][end] - log["angle"][end])
     return "breaks away" if towards else "yields back"
 
 
@@ -144,7 +125,7 @@ def swing_lines(logs):
         if log["trajectory"] != "lift_and_drop" or not len(off):
             continue
         first = off[0]
-        fit = swing_friction(log["time_s"][first:], log["angle"][first:], log["rate"][first:],
+        fit = swing_friction(log["time_s"][first:], log["angle"][first:], log["speed"][first:],
                              log["mass"], log["length"])
         if fit is None:
             continue
@@ -158,11 +139,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", default=os.path.join(ROOT, "benchmarks", "xl330_holds"))
     args = parser.parse_args()
-    folder = os.path.join(BAM, "xl330", "raw")
-    if not os.path.isdir(folder):
-        print("BAM logs absent (%s): nothing to read" % folder)
+    logs = raw_logs()
+    if logs is None:
         return 0
-    logs = [load(p) for p in sorted(glob.glob(os.path.join(folder, "*.json")))]
     lines = ["XL330 raw logs (../shared/data/bam/xl330/raw), every log we have. "
              "`scripts/xl330_holds.py`, %s." % time.strftime("%Y-%m-%d"), "",
              "Holds: the arm still (|θ̇| < %g rad/s for %g s or more), torque on, the goal more than "

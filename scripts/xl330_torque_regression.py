@@ -34,29 +34,42 @@ def signed_pwm(register):
 
 
 def load(path):
-    """One raw log as arrays; the rate and acceleration from the positions and timestamps. The
-    raw logs, not the processed ones: their PWM register is exact, while the processed logs
-    interpolate the unsigned register across every sign change (../shared/data/bam/xl330)."""
+    """One raw log as arrays (time from its first sample); the rate and acceleration from the
+    positions and timestamps, beside the servo's own velocity reading (`speed`). The raw logs, not
+    the processed ones: their PWM register is exact, while the processed logs interpolate the
+    unsigned register across every sign change (../shared/data/bam/xl330)."""
     with open(path) as f:
         log = json.load(f)
     entries = log["entries"]
-    time_s = np.array([e["timestamp"] for e in entries])
+    time_s = np.array([e["timestamp"] for e in entries]) - entries[0]["timestamp"]
     angle = np.array([e["position"] for e in entries])
     kernel = np.ones(SMOOTH) / SMOOTH
     rate = np.convolve(np.gradient(angle, time_s), kernel, "same")
     acceleration = np.convolve(np.gradient(rate, time_s), kernel, "same")
+    duty = np.array([signed_pwm(e["load"]) for e in entries]) / PWM_FULL_SCALE
+    supply = np.array([e["input_volts"] for e in entries])
     return dict(kp=log["kp"], trajectory=log["trajectory"], mass=log["mass"], length=log["length"],
-                angle=angle, rate=rate, acceleration=acceleration,
-                duty=np.array([signed_pwm(e["load"]) for e in entries]) / PWM_FULL_SCALE,
-                supply=np.array([e["input_volts"] for e in entries]),
+                time_s=time_s, angle=angle, rate=rate, acceleration=acceleration,
+                speed=np.array([e["speed"] for e in entries]),
+                goal=np.array([e["goal_position"] for e in entries]),
+                duty=duty, supply=supply, drive_v=supply * duty,
                 on=np.array([bool(e["torque_enable"]) for e in entries]))
+
+
+def raw_logs():
+    """Every raw XL330 log we have, loaded, or None (and a line saying so) when
+    ../shared/data/bam is absent."""
+    folder = os.path.join(BAM, "xl330", "raw")
+    if not os.path.isdir(folder):
+        print("BAM logs absent (%s): nothing to read" % folder)
+        return None
+    return [load(p) for p in sorted(glob.glob(os.path.join(folder, "*.json")))]
 
 
 def columns(log, drive):
     """The regressors: `drive` (name -> list of drive columns from U and θ̇), then −θ̇, −sign θ̇,
     −θ̈."""
-    drive_v = log["supply"] * log["duty"]
-    return np.stack(DRIVES[drive](drive_v, log["rate"]) +
+    return np.stack(DRIVES[drive](log["drive_v"], log["rate"]) +
                     [-log["rate"], -np.sign(log["rate"]), -log["acceleration"]], 1)
 
 
@@ -125,11 +138,9 @@ def main():
     parser.add_argument("--results", default=os.path.join(ROOT, "benchmarks",
                                                           "xl330_torque_regression"))
     args = parser.parse_args()
-    folder = os.path.join(BAM, "xl330", "raw")
-    if not os.path.isdir(folder):
-        print("BAM logs absent (%s): nothing to regress" % folder)
+    logs = raw_logs()
+    if logs is None:
         return 0
-    logs = [load(p) for p in sorted(glob.glob(os.path.join(folder, "*.json")))]
     gains = sorted({log["kp"] for log in logs})
     lines = ["XL330 raw logs (../shared/data/bam/xl330/raw, the PWM register read as signed), every log we have, moving "
              "(|θ̇| > 0.1 rad/s), torque on, duty below 98 %%; least squares of "
