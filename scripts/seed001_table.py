@@ -117,6 +117,9 @@ def describe_run(run):
     text = ", ".join(parts)
     if run.get("ensemble"):
         text += "; " + describe_ensemble(run["ensemble"], run.get("commands"))
+    if run.get("quickstep_seed_ensemble"):
+        text += "; " + describe_ensemble(run["quickstep_seed_ensemble"], run.get("commands"),
+                                         kind="seeds")
     return text
 
 
@@ -129,12 +132,14 @@ def spread(values, digits, unit):
     return f"{median:.{digits}f} {unit} (median; {known[0]:.{digits}f}-{known[-1]:.{digits}f})"
 
 
-def describe_ensemble(ensemble, commands, label=None):
-    """The perturbed replays (same model, commands + 1e-7 rad noise): how much is chaos. Their
-    mean speed from 1 s for a command file (or `commands`), else their steady speed; `label`
-    names it ("" for none)."""
+def describe_ensemble(ensemble, commands, label=None, kind="noise"):
+    """The perturbed replays (same model, commands + 1e-7 rad noise; kind "seeds": the commands
+    as they are, the quick step's rows in other orders): how much is chaos. Their mean speed from
+    1 s for a command file (or `commands`), else their steady speed; `label` names it ("" for
+    none)."""
     n = ensemble["size"]
-    text = f"{n} replays with 1e-7 rad noise: {ensemble['fell']} of {n} fall"
+    what = "replays with 1e-7 rad noise" if kind == "noise" else "other quick-step row orders"
+    text = f"{n} {what}: {ensemble['fell']} of {n} fall"
     if ensemble["fell"]:
         text += ", at " + spread(ensemble["fall_s"], 2, "s")
     key = "mean_speed_mm_s" if commands else "speed_mm_s"
@@ -196,6 +201,9 @@ def describe_gait_run(run):
     ensemble = (run or {}).get("ensemble")
     if ensemble:  # the speed's measure is the cell's, named there
         cell += "; " + describe_ensemble(ensemble, True, label="")
+    seeds = (run or {}).get("quickstep_seed_ensemble")
+    if seeds:
+        cell += "; " + describe_ensemble(seeds, True, label="", kind="seeds")
     return cell
 
 

@@ -94,6 +94,11 @@ CommandRunner add_experiment_command(CLI::App& app) {
   sub->add_option("--ensemble-sigma", args->ensemble.sigma_rad,
                   "the perturbation's standard deviation in rad (default 1e-7)")
       ->check(CLI::Range(0.0, 0.01));
+  sub->add_option("--seed-ensemble", args->ensemble.quickstep_seeds,
+                  "also run every walk of a variant with solver: quick N times with its rows "
+                  "shuffled in another order (physics.quickstep_seed 1..N): how much of a fall "
+                  "time or speed is the quick step's row order")
+      ->check(CLI::Range(0, 1000));
   sub->add_option("--commands", args->commands,
                   "NAME=FILE: replay this command file (2011 MoToFlex format or a joint log) as "
                   "the experiment's command-file walk NAME (e.g. commands_200_1)");

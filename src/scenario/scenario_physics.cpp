@@ -1,5 +1,7 @@
 #include "scenario_physics.hpp"
 
+#include <cmath>
+
 #include "motoflex/core/error_collector.hpp"
 
 namespace motoflex {
@@ -48,8 +50,9 @@ void read_flex_model(const YamlValue& physics, RolloutOptions& rollout) {
 // top of a scenario's).
 void read_physics_section(const YamlValue& physics, ScenarioPhysics& out) {
   physics.require_keys_within({"dt_s", "solver", "quickstep_iterations", "quickstep_w",
-                               "gear_substeps", "flex_sub_bodies", "flex_model", "max_contacts",
-                               "universal_joints", "settle_s", "hold_torso", "float_state"});
+                               "quickstep_seed", "gear_substeps", "flex_sub_bodies", "flex_model",
+                               "max_contacts", "universal_joints", "settle_s", "hold_torso",
+                               "float_state"});
   RolloutOptions& rollout = out.rollout;
   StructureOptions& structure = out.structure;
   ErrorCollector errors;
@@ -68,6 +71,13 @@ void read_physics_section(const YamlValue& physics, ScenarioPhysics& out) {
     if (!(rollout.quickstep_w > 0.0 && rollout.quickstep_w < 2.0)) {
       physics.at("quickstep_w").fail("must be in (0, 2) (SOR over-relaxation)");
     }
+  });
+  errors.check([&] {
+    const double seed = physics.get_double("quickstep_seed", rollout.quickstep_seed);
+    if (!(seed >= 0.0 && seed <= 4294967295.0 && std::floor(seed) == seed)) {
+      physics.at("quickstep_seed").fail("must be a whole number from 0 to 4294967295");
+    }
+    rollout.quickstep_seed = static_cast<std::uint32_t>(seed);
   });
   errors.check([&] { read_flex_model(physics, rollout); });
   errors.check([&] {

@@ -116,9 +116,9 @@ struct Rollout::Impl {
   std::vector<double> joint_torque1, joint_torque2;  // per model joint, accumulated each step
   std::vector<std::size_t> flex_joints;              // model joint indices
   double flex_velocity_gain = 0.0;                   // ERP/h of the flex springs (implicit)
-  unsigned long quick_step_seed = 0;                 // this rollout's dRandInt state (quick)
-  detail::SparseStepState sparse_lcp;                // this rollout's LCP solver (sparse)
-  std::vector<std::unique_ptr<ServoLaw>> servos;     // per actuator
+  unsigned long quick_step_seed = 0;   // this rollout's dRandInt state (quick; build_world sets it)
+  detail::SparseStepState sparse_lcp;  // this rollout's LCP solver (sparse)
+  std::vector<std::unique_ptr<ServoLaw>> servos;  // per actuator
   // Extra rows of an actuated axis that its law asks for (null = none): the armature's inertia
   // row and a separate friction row, each an angular motor between the joint's two bodies.
   struct AxisRows {
@@ -190,6 +190,7 @@ void Rollout::Impl::build_world() {
   dWorldSetCFM(world, params.world_cfm);
   dWorldSetQuickStepNumIterations(world, options.quickstep_iterations);
   dWorldSetQuickStepW(world, options.quickstep_w);
+  quick_step_seed = options.quickstep_seed;
   contact_group = dJointGroupCreate(0);
   ground = dCreatePlane(nullptr, 0.0, 0.0, 1.0, 0.0);
 

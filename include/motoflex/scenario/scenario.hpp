@@ -23,11 +23,14 @@ namespace motoflex {
 //   servo: motoflex              # optional; the robot's default otherwise
 //   seed: 1                      # sensor-noise stream
 //   physics: {dt_s: 0.001, solver: step, quickstep_iterations: 20, quickstep_w: 1.3,
+//             quickstep_seed: 0,
 //             gear_substeps: 100, flex_sub_bodies: 1, flex_model: implicit, max_contacts: 4,
 //             universal_joints: true, settle_s: 0.5, hold_torso: false, float_state: false}
 //            # flex_model: implicit | explicit_cfm (FlexModel, rollout.hpp); max_contacts: per
-//            # foot box and step; quickstep_w: SOR factor of solver: quick; float_state: the
-//            # bodies' state rounded to single precision after each step (the 2011 program's)
+//            # foot box and step; quickstep_w: SOR factor of solver: quick; quickstep_seed:
+//            # ODE's random state at its first step (the rows' shuffle; 0 = a fresh process's);
+//            # float_state: the bodies' state rounded to single precision after each step (the
+//            # 2011 program's)
 //   motion:                      # exactly one of:
 //     log: ../reference_data/walk.csv        # replay the .cmd columns of a joint log
 //     keyframes: {rate_hz: 100, frames: [{t_s: 0, pose: {LKneePitch: 0.5}}, ...]}

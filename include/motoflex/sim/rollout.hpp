@@ -43,6 +43,10 @@ struct RolloutOptions {
   StepSolver solver = StepSolver::kStep;
   int quickstep_iterations = 20;  // dWorldQuickStep only
   double quickstep_w = 1.3;       // dWorldQuickStep's SOR over-relaxation (ODE's default 1.3)
+  // The state of ODE's random generator when the first quick step starts (it shuffles the
+  // constraint rows with it, ode_thread_random.cpp); 0 is a fresh process's. Each value is one
+  // draw of the rows' order, which an unconverged quick step's answer depends on.
+  std::uint32_t quickstep_seed = 0;
   FlexModel flex_model = FlexModel::kImplicit;
   // Round every body's stored state (position, orientation, velocities) to single precision
   // after each step, as the 2011 program's float build of ODE keeps it (motoflex_2011.md §1).

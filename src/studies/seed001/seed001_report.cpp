@@ -92,6 +92,7 @@ nlohmann::ordered_json run_json(const Seed001Run& run, const std::string& series
   j["end_detail"] = run.end_detail;
   j["series"] = series;
   if (!run.ensemble.empty()) j["ensemble"] = ensemble_json(run.ensemble);
+  if (!run.seed_ensemble.empty()) j["quickstep_seed_ensemble"] = ensemble_json(run.seed_ensemble);
   return j;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <filesystem>
 #include <limits>
@@ -90,6 +91,13 @@ Job perturbed_copy(const Job& job, int k, double sigma_rad) {
   std::vector<double> angles = c.angles_rad();
   for (double& angle : angles) angle += sigma_rad * noise.normal();
   copy.scenario.commands = CommandTrajectory(c.times_s(), std::move(angles), c.joints());
+  return copy;
+}
+
+// A copy of the job whose quick step starts from ODE random state `seed` (Seed001Ensemble).
+Job reseeded_copy(const Job& job, std::uint32_t seed) {
+  Job copy = job;
+  copy.scenario.rollout.quickstep_seed = seed;
   return copy;
 }
 
@@ -232,6 +240,36 @@ Seed001ZmpResult load_zmp_trials(const Seed001Config& config, const std::vector<
   return zmp;
 }
 
+// The ensemble's replica jobs, (run, job) of each: the noise replicas, then the quick-step seed
+// replicas (Seed001Ensemble), appended to `jobs` after those already there.
+struct ReplicaJobs {
+  std::vector<std::pair<std::size_t, std::size_t>> noise;
+  std::vector<std::pair<std::size_t, std::size_t>> seeds;
+};
+
+ReplicaJobs add_replica_jobs(const std::vector<int>& job_of_run, const Seed001Ensemble& ensemble,
+                             std::deque<Job>& jobs) {
+  ReplicaJobs replicas;
+  for (std::size_t r = 0; r < job_of_run.size(); ++r) {
+    if (job_of_run[r] < 0) continue;
+    for (int k = 0; k < ensemble.size; ++k) {
+      replicas.noise.emplace_back(r, jobs.size());
+      jobs.push_back(
+          perturbed_copy(jobs[static_cast<std::size_t>(job_of_run[r])], k, ensemble.sigma_rad));
+    }
+  }
+  for (std::size_t r = 0; r < job_of_run.size(); ++r) {
+    if (job_of_run[r] < 0) continue;
+    const std::size_t j = static_cast<std::size_t>(job_of_run[r]);
+    if (jobs[j].scenario.rollout.solver != StepSolver::kQuickStep) continue;
+    for (int k = 1; k <= ensemble.quickstep_seeds; ++k) {
+      replicas.seeds.emplace_back(r, jobs.size());
+      jobs.push_back(reseeded_copy(jobs[j], static_cast<std::uint32_t>(k)));
+    }
+  }
+  return replicas;
+}
+
 }  // namespace
 
 Seed001Results run_seed001(const Seed001Config& config, int threads,
@@ -267,27 +305,22 @@ Seed001Results run_seed001(const Seed001Config& config, int threads,
     results.zmp = load_zmp_trials(config, results.runs, job_of_run, jobs, zmp_jobs);
   }
 
-  // Ensemble replicas of the walk runs: (run, job) of each, after the ZMP jobs.
-  std::vector<std::pair<std::size_t, std::size_t>> replica_jobs;
-  for (std::size_t r = 0; r < results.runs.size(); ++r) {
-    if (job_of_run[r] < 0) continue;
-    for (int k = 0; k < ensemble.size; ++k) {
-      replica_jobs.emplace_back(r, jobs.size());
-      jobs.push_back(
-          perturbed_copy(jobs[static_cast<std::size_t>(job_of_run[r])], k, ensemble.sigma_rad));
-    }
-  }
-
+  const ReplicaJobs replicas = add_replica_jobs(job_of_run, ensemble, jobs);
   std::vector<RolloutResult> rollouts = run_jobs(jobs, threads);
-  for (const auto& [r, j] : replica_jobs) {
+  for (const auto& [r, j] : replicas.noise) {
     results.runs[r].ensemble.push_back(replica_of(evaluate(jobs[j], std::move(rollouts[j]))));
+  }
+  for (const auto& [r, j] : replicas.seeds) {
+    results.runs[r].seed_ensemble.push_back(replica_of(evaluate(jobs[j], std::move(rollouts[j]))));
   }
   for (std::size_t r = 0; r < results.runs.size(); ++r) {
     if (job_of_run[r] < 0) continue;
     const std::size_t j = static_cast<std::size_t>(job_of_run[r]);
-    std::vector<Seed001Replica> replicas = std::move(results.runs[r].ensemble);
+    std::vector<Seed001Replica> noise = std::move(results.runs[r].ensemble);
+    std::vector<Seed001Replica> seeds = std::move(results.runs[r].seed_ensemble);
     results.runs[r] = evaluate(jobs[j], std::move(rollouts[j]));
-    results.runs[r].ensemble = std::move(replicas);
+    results.runs[r].ensemble = std::move(noise);
+    results.runs[r].seed_ensemble = std::move(seeds);
   }
   if (results.zmp) {
     for (std::size_t k = 0; k < zmp_jobs.size(); ++k) {

@@ -194,6 +194,44 @@ TEST(Seed001Study, ACommandFileWalkReplaysTheFileWithItsOwnWindowAndAnEnsemble) 
   EXPECT_THROW(set_walk_command_file(config, "nobody", "x.csv"), InputError);
 }
 
+// --seed-ensemble: replicas of a quick-step variant with the rows shuffled in another order
+// (physics.quickstep_seed 1..N), none for a variant with the exact solver, which has no order.
+TEST(Seed001Study, AQuickStepVariantGetsReplicasWithOtherRowOrders) {
+  const fs::path dir = fresh_dir("seed001_seed_ensemble");
+  const std::string source = MOTOFLEX_SOURCE_DIR;
+  write_crouch_commands(dir / "crouch.csv");
+  write_text(
+      dir / "study.yaml",
+      "walks:\n  - {name: crouch, commands: crouch.csv, step_s: 0.5, steady_s: [0.5, "
+      "1.5]}\nvariants:\n  - {name: exact, scenario: " +
+          source + "/scenarios/experiments/seed001/rigid_2011.yaml}\n  - {name: quick, scenario: " +
+          source + "/scenarios/experiments/seed001/rigid_2011.yaml, physics: {solver: quick}}\n");
+  const Seed001Config config = load_seed001_config((dir / "study.yaml").string());
+  Seed001Ensemble ensemble;
+  ensemble.quickstep_seeds = 2;
+  const Seed001Results results = run_seed001(config, 2, ensemble);
+  ASSERT_EQ(results.runs.size(), 2u);
+  const Seed001Run& exact = results.runs[0];
+  const Seed001Run& quick = results.runs[1];
+  ASSERT_EQ(quick.variant, "quick");
+  EXPECT_TRUE(exact.seed_ensemble.empty());
+  EXPECT_TRUE(quick.ensemble.empty());
+  ASSERT_EQ(quick.seed_ensemble.size(), 2u);
+  // Each order is its own answer of the unconverged quick step: the stand drifts sideways by a
+  // different few nm, and travels no more than the run itself does.
+  EXPECT_NE(quick.seed_ensemble[0].lateral_m, quick.seed_ensemble[1].lateral_m);
+  EXPECT_NE(quick.seed_ensemble[0].lateral_m, quick.lateral_m);
+  for (const Seed001Replica& replica : quick.seed_ensemble) {
+    EXPECT_FALSE(replica.fell);
+    EXPECT_LT(std::abs(replica.speed_mm_s), 2.0);
+  }
+  const nlohmann::ordered_json j = seed001_json(config, results);
+  EXPECT_EQ(j["crouch"]["quick"]["quickstep_seed_ensemble"]["size"], 2);
+  EXPECT_FALSE(j["crouch"]["exact"].contains("quickstep_seed_ensemble"));
+  // Seeds, not threads, decide: one thread gives the same replicas.
+  EXPECT_EQ(j.dump(), seed001_json(config, run_seed001(config, 1, ensemble)).dump());
+}
+
 // Writes `text` as dir/bad.yaml and returns the InputError loading it throws (a test failure,
 // and nothing, when it loads).
 std::optional<InputError> config_error(const fs::path& dir, const std::string& text) {

@@ -52,13 +52,20 @@ struct Seed001Run {
   double max_abs_roll_rad = 0.0;         // largest |torso roll| before the end
   RolloutResult result;                  // frames, torso position, IMU roll/pitch
   std::vector<Seed001Replica> ensemble;  // empty unless an ensemble was asked for
+  // Replicas with the quick step's rows in another order (Seed001Ensemble::quickstep_seeds);
+  // empty unless asked for and the variant steps with solver: quick.
+  std::vector<Seed001Replica> seed_ensemble;
 };
 
 // Replicas of every walk run (not of the ZMP trials): `size` runs each, replica k with its
-// commands plus N(0, sigma_rad²) noise drawn from the stream {k, hash of walk and variant}.
+// commands plus N(0, sigma_rad²) noise drawn from the stream {k, hash of walk and variant}; and
+// for a variant with solver: quick, `quickstep_seeds` runs more, replica k with the commands as
+// they are and physics.quickstep_seed k (1..quickstep_seeds; the run itself has 0): the same
+// model with the quick step's rows shuffled in another order.
 struct Seed001Ensemble {
   int size = 0;
   double sigma_rad = 1e-7;
+  int quickstep_seeds = 0;
 };
 
 // One trial of the ZMP experiment: the walk with one setting under one variant. A value the
