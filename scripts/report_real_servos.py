@@ -11,6 +11,7 @@ lift_and_drop, sts3250_sin sin_time_square).
 Usage: report_real_servos.py [--binary build/motoflex] [--out runs/real_servos]
                              [--results benchmarks/real_servos] [--threads 2] [--scale 1.0]
                              [--servos xl330,xl330_traj,sts3250,...] [--models 1,2,3,4,5,6] [--no-loop]
+                             [--reuse-loops] [--merge]
                              [--nao]   (also: nao_quick with and without LM)
 Writes RESULTS/real_servos.md and RESULTS/real_servos.json (git hash, date, budgets).
 """
@@ -204,25 +205,39 @@ def fit_row(binary, servo, model, train, val, work, threads, scale, polish=False
     return row
 
 
-def loop_row(binary, servo, train, val, work, threads):
+def loop_row(binary, servo, train, val, work, threads, reuse=False):
+    """The loop's row: held-out MAE of its base fit and of its final model, and the same on the
+    training logs. `reuse`: read a finished loop in WORK/loop instead of running it again."""
     out = os.path.join(work, "loop")
-    shutil.rmtree(out, ignore_errors=True)
     config = os.path.join(ROOT, "scenarios", "fit", SERVOS[servo]["config"])
-    start = time.monotonic()
-    subprocess.run([binary, "loop", config, "--data", train, "--validation", val, "--out", out,
-                    "--threads", str(threads), "--force"], check=True, stdout=subprocess.DEVNULL)
-    seconds = time.monotonic() - start
-    with open(os.path.join(out, "loop.json")) as f:
+    summary = os.path.join(out, "loop.json")
+    if reuse and os.path.exists(summary):
+        seconds = None
+    else:
+        shutil.rmtree(out, ignore_errors=True)
+        start = time.monotonic()
+        subprocess.run([binary, "loop", config, "--data", train, "--validation", val, "--out",
+                        out, "--threads", str(threads), "--force"], check=True,
+                       stdout=subprocess.DEVNULL)
+        seconds = time.monotonic() - start
+    with open(summary) as f:
         loop = json.load(f)
     its = loop["iterations"]
+    measured = os.path.join(out, "imported", "train")
+
+    def train_mae(run_dir):
+        return mae_mrad(os.path.join(run_dir, "best"), measured)
+
     return {
         "servo": servo, "model": "motoflex loop (M1 + " +
         (" + ".join(it["added_effect"] for it in its if it["added_effect"]) or "nothing") + ")",
         "free": None, "budget_evaluations": None, "evaluations": loop["evaluations"],
-        "train_mae_mrad": None,
+        "train_mae_before_mrad": train_mae(loop["base_run_dir"]),
+        "train_mae_mrad": train_mae(loop["final_run_dir"]),
         "val_mae_before_mrad": 1e3 * its[0]["val_mae_before_rad"] if its else None,
         "val_mae_mrad": 1e3 * its[-1]["val_mae_after_rad"] if its else None,
-        "wall_seconds": seconds, "bam_published_val_mae_mrad": None,
+        "wall_seconds": seconds if seconds is not None else loop["wall_seconds"],
+        "bam_published_val_mae_mrad": None,
     }
 
 
@@ -281,9 +296,12 @@ def markdown(rows, nao, args):
         held = number(r["val_mae_mrad"])
         if r.get("val_mae_before_mrad") is not None:
             held = "%.1f → %.1f" % (r["val_mae_before_mrad"], r["val_mae_mrad"])
+        train = number(r["train_mae_mrad"])
+        if r.get("train_mae_before_mrad") is not None:
+            train = "%.1f → %.1f" % (r["train_mae_before_mrad"], r["train_mae_mrad"])
         lines.append("| %s | %s | %s | %d | %s | %s | %s | %.0f | %s |" % (
             r["servo"], r["model"], number(r["free"], "%d"), r["evaluations"],
-            number(r["train_mae_mrad"]), held, number(r["bam_published_val_mae_mrad"]),
+            train, held, number(r["bam_published_val_mae_mrad"]),
             r["wall_seconds"], r.get("date", FIRST_RUN_DATE)))
     lines += ["", "Splits: " + "; ".join("%s: %s" % (k, v["split"]) for k, v in SERVOS.items())]
     if nao:
@@ -331,6 +349,10 @@ def main():
     parser.add_argument("--models", default="1,2,3,4,5,6")
     parser.add_argument("--no-loop", action="store_true")
     parser.add_argument("--no-lm", action="store_true", help="skip the M1 + LM rows")
+    parser.add_argument("--reuse-loops", action="store_true",
+                        help="read finished loops in OUT/<servo>/loop instead of running them again "
+                             "(their rows then get their training MAE, their wall time is the "
+                             "loop's own)")
     parser.add_argument("--merge", action="store_true",
                         help="replace only the rows run now in RESULTS/real_servos.json (each row "
                              "keeps its own date); the others stay as they were")
@@ -356,7 +378,8 @@ def main():
                                 polish=True))
             print(rows[-1], flush=True)
         if not args.no_loop:
-            rows.append(loop_row(args.binary, servo, train, val, work, args.threads))
+            rows.append(loop_row(args.binary, servo, train, val, work, args.threads,
+                                 args.reuse_loops))
             print(rows[-1], flush=True)
     nao = nao_rows(args.binary, args.out, args.threads, args.nao_generations,
                    args.nao_lm_iterations) if args.nao else []

@@ -1,0 +1,64 @@
+"""scripts/report_real_servos.py: a loop's row carries the mean absolute error of its base fit and
+of its final model on the training logs (the simulated best/ logs of each run against the
+imported training logs) beside the held-out pair of loop.json, and --reuse-loops reads a finished
+loop without running anything."""
+
+import importlib.util
+import json
+import os
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+
+SCRIPTS = Path(__file__).resolve().parent.parent.parent / "scripts"
+sys.path.insert(0, str(SCRIPTS))
+spec = importlib.util.spec_from_file_location("report_real_servos",
+                                              SCRIPTS / "report_real_servos.py")
+report_real_servos = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(report_real_servos)
+
+
+def write_log(path, angles_rad):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write("# a comment line the reader skips\ntime_s,pendulum.cmd,pendulum.meas\n")
+        for k, angle in enumerate(angles_rad):
+            f.write("%g,0,%r\n" % (0.005 * k, angle))
+
+
+class LoopRowTest(unittest.TestCase):
+    def test_training_errors_of_the_base_fit_and_the_final_model(self):
+        with tempfile.TemporaryDirectory() as work:
+            loop = os.path.join(work, "loop")
+            base, final = os.path.join(loop, "00_base"), os.path.join(loop, "02_stribeck")
+            # Two training logs; the base fit is 0.010 and 0.030 rad off (4 and 2 samples),
+            # the final model 0.002 rad off everywhere.
+            write_log(os.path.join(loop, "imported", "train", "a.csv"), [0.1, 0.2, 0.3, 0.4])
+            write_log(os.path.join(loop, "imported", "train", "b.csv"), [-0.5, -0.6])
+            write_log(os.path.join(base, "best", "a.csv"), [0.11, 0.19, 0.31, 0.39])
+            write_log(os.path.join(base, "best", "b.csv"), [-0.47, -0.63])
+            write_log(os.path.join(final, "best", "a.csv"), [0.102, 0.198, 0.302, 0.398])
+            write_log(os.path.join(final, "best", "b.csv"), [-0.498, -0.602])
+            with open(os.path.join(loop, "loop.json"), "w") as f:
+                json.dump({"base_run_dir": base, "final_run_dir": final, "evaluations": 1234,
+                           "wall_seconds": 56.0,
+                           "iterations": [
+                               {"added_effect": "load_friction", "val_mae_before_rad": 0.05,
+                                "val_mae_after_rad": 0.03},
+                               {"added_effect": "stribeck", "val_mae_before_rad": 0.03,
+                                "val_mae_after_rad": 0.02}]}, f)
+            row = report_real_servos.loop_row("/nonexistent/motoflex", "sts3250", "unused",
+                                              "unused", work, 1, reuse=True)
+        # (4 x 0.010 + 2 x 0.030) / 6 = 0.016 67 rad; the final model 0.002 rad.
+        self.assertAlmostEqual(row["train_mae_before_mrad"], 100.0 / 6.0, places=9)
+        self.assertAlmostEqual(row["train_mae_mrad"], 2.0, places=9)
+        self.assertAlmostEqual(row["val_mae_before_mrad"], 50.0, places=9)
+        self.assertAlmostEqual(row["val_mae_mrad"], 20.0, places=9)
+        self.assertEqual(row["model"], "motoflex loop (M1 + load_friction + stribeck)")
+        self.assertEqual(row["wall_seconds"], 56.0)  # the loop's own, since nothing ran now
+        self.assertEqual(row["evaluations"], 1234)
+
+
+if __name__ == "__main__":
+    unittest.main()
