@@ -3,7 +3,6 @@ of its final model on the training logs (the simulated best/ logs of each run ag
 imported training logs) beside the held-out pair of loop.json, and --reuse-loops reads a finished
 loop without running anything."""
 
-import importlib.util
 import json
 import os
 import sys
@@ -11,12 +10,8 @@ import tempfile
 import unittest
 from pathlib import Path
 
-SCRIPTS = Path(__file__).resolve().parent.parent.parent / "scripts"
-sys.path.insert(0, str(SCRIPTS))
-spec = importlib.util.spec_from_file_location("report_real_servos",
-                                              SCRIPTS / "report_real_servos.py")
-report_real_servos = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(report_real_servos)
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent.parent / "scripts"))
+import report_real_servos  # noqa: E402
 
 
 def write_log(path, angles_rad):
