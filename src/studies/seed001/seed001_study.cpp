@@ -307,20 +307,17 @@ Seed001Results run_seed001(const Seed001Config& config, int threads,
 
   const ReplicaJobs replicas = add_replica_jobs(job_of_run, ensemble, jobs);
   std::vector<RolloutResult> rollouts = run_jobs(jobs, threads);
+  // The runs first, so that their replicas are appended to the evaluated runs.
+  for (std::size_t r = 0; r < results.runs.size(); ++r) {
+    if (job_of_run[r] < 0) continue;
+    const std::size_t j = static_cast<std::size_t>(job_of_run[r]);
+    results.runs[r] = evaluate(jobs[j], std::move(rollouts[j]));
+  }
   for (const auto& [r, j] : replicas.noise) {
     results.runs[r].ensemble.push_back(replica_of(evaluate(jobs[j], std::move(rollouts[j]))));
   }
   for (const auto& [r, j] : replicas.seeds) {
     results.runs[r].seed_ensemble.push_back(replica_of(evaluate(jobs[j], std::move(rollouts[j]))));
-  }
-  for (std::size_t r = 0; r < results.runs.size(); ++r) {
-    if (job_of_run[r] < 0) continue;
-    const std::size_t j = static_cast<std::size_t>(job_of_run[r]);
-    std::vector<Seed001Replica> noise = std::move(results.runs[r].ensemble);
-    std::vector<Seed001Replica> seeds = std::move(results.runs[r].seed_ensemble);
-    results.runs[r] = evaluate(jobs[j], std::move(rollouts[j]));
-    results.runs[r].ensemble = std::move(noise);
-    results.runs[r].seed_ensemble = std::move(seeds);
   }
   if (results.zmp) {
     for (std::size_t k = 0; k < zmp_jobs.size(); ++k) {
