@@ -140,14 +140,15 @@ std::string write_refit(const Evaluated& current, const RefitStart& candidate,
           *start_rollouts += probe.train->cases().size();
           return probe.train->evaluate(space.apply(trial)).fitness;
         },
-        x, start_fitness);
+        x, start_fitness, current.fit.config.loop.refit_scan_pairs);
     estimate.clear();
     for (const std::size_t i : indices) {
       estimate.emplace_back(space.free_parameters()[i].targets.front(), space.to_model(i, x[i]));
     }
-    std::printf(
-        "loop:   %s: start scan (%zu points per parameter): training fitness %.4g -> %.4g\n",
-        effect.name.c_str(), points, before, start_fitness);
+    const bool grid = current.fit.config.loop.refit_scan_pairs && indices.size() == 2;
+    std::printf("loop:   %s: start scan (%zu points %s): training fitness %.4g -> %.4g\n",
+                effect.name.c_str(), points,
+                grid ? "on each side of the pair's grid" : "per parameter", before, start_fitness);
     std::fflush(stdout);
   }
   return write_refit_config(current.fit.config, fitted, effect, estimate, dir, start,

@@ -146,10 +146,14 @@ LoopOptions read_loop(const YamlValue& node) {
     }
   }
   if (const auto refit = node.find("refit")) {
-    refit->require_keys_within({"strategy", "budget", "polish", "scan"});
+    refit->require_keys_within({"strategy", "budget", "polish", "scan", "scan_pairs"});
     const int scan = refit->get_int("scan", 0);
     if (scan < 0 || scan == 1 || scan == 2) refit->at("scan").fail("must be 0 (none) or >= 3");
     loop.refit_scan = static_cast<std::size_t>(scan);
+    loop.refit_scan_pairs = refit->get_bool("scan_pairs", false);
+    if (loop.refit_scan_pairs && scan == 0) {
+      refit->at("scan_pairs").fail("needs `scan` (points per parameter, >= 3)");
+    }
     if (const auto polish = refit->find("polish")) loop.refit_polish = read_polish(*polish);
     if (const auto strategy = refit->find("strategy")) {
       loop.refit_strategy = read_strategy(*strategy);

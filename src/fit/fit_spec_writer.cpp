@@ -148,6 +148,7 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
     fit["loop"]["refit"]["polish"] = polish_to_json(spec.loop.refit_polish);
   }
   if (spec.loop.refit_scan > 0) fit["loop"]["refit"]["scan"] = spec.loop.refit_scan;
+  if (spec.loop.refit_scan_pairs) fit["loop"]["refit"]["scan_pairs"] = true;
   fit["threads"] = spec.threads;
   fit["seed"] = spec.seed;
   fit["out"] = spec.out_dir;

@@ -195,6 +195,21 @@ TEST(EffectConfig, RefitScanIsReadAndChecked) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("scan"), std::string::npos) << e.what();
   }
+  // scan_pairs: off unless asked for, written back into a refit's fit.yaml only when on (an
+  // older loop's identity is unchanged), and refused without the scan it refines.
+  EXPECT_FALSE(scanned.loop.refit_scan_pairs);
+  EXPECT_FALSE(fit_spec_to_json(scanned)["loop"]["refit"].contains("scan_pairs"));
+  const FitConfig paired = load_fit_config(
+      write_hidden_bench_fit(dir / "pairs", "none", "{refit: {scan: 9, scan_pairs: true}}"));
+  EXPECT_TRUE(paired.loop.refit_scan_pairs);
+  EXPECT_EQ(fit_spec_to_json(paired)["loop"]["refit"]["scan_pairs"], true);
+  try {
+    load_fit_config(
+        write_hidden_bench_fit(dir / "pairs_alone", "none", "{refit: {scan_pairs: true}}"));
+    FAIL() << "scan_pairs without scan accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("scan_pairs"), std::string::npos) << e.what();
+  }
 }
 
 // evaluation_spec: the loop's carry-over of re-optimised values to a model without the refit's

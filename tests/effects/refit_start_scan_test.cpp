@@ -75,5 +75,72 @@ TEST_F(RefitStartScanTest, AStartAlreadyBestIsKept) {
   EXPECT_EQ(far[0], std::log(398.0));
 }
 
+// Winding heating's shape: the heat capacity C (coordinate 1, log) acts only when the thermal
+// resistance R_th (coordinate 0) is on, and at the start's C no R_th helps. Fitness 1 − e^(−R_th/
+// 20)·g(C), g = exp(−ln²(C/0.1)): best near R_th = 200, C = 0.1; at the start C = 0.5, g =
+// e^(−2.59) = 0.075, so R_th's best step gains < 0.075 and C's scan, done with R_th still 0, none.
+double heating_fitness(const std::vector<double>& x) {
+  const double rth = x[0];
+  const double c = std::exp(x[1]);
+  const double shape = std::exp(-std::pow(std::log(c / 0.1), 2));
+  const double on = 1.0 - std::exp(-rth / 20.0);
+  return 1.0 - on * shape + (rth > 0.0 && shape < 0.2 ? 0.1 * on : 0.0);
+}
+
+class PairScanTest : public ::testing::Test {
+ protected:
+  PairScanTest() {
+    registry_.add({"motor.winding_k_per_w", unit_from_parameter_name("motor.winding_k_per_w"), 0.0,
+                   0.0, 200.0});
+    registry_.add({"motor.winding_heat_j_per_k",
+                   unit_from_parameter_name("motor.winding_heat_j_per_k"), 0.5, 0.01, 20.0});
+  }
+  ParameterSpace space() const {
+    std::vector<FreeParameter> free;
+    free.push_back({"motor.winding_k_per_w", {"motor.winding_k_per_w"}, 0.0, 200.0, false, 0.0});
+    free.push_back(
+        {"motor.winding_heat_j_per_k", {"motor.winding_heat_j_per_k"}, 0.01, 20.0, true, 0.5});
+    return ParameterSpace(std::move(free), ParameterSet(registry_));
+  }
+  ParameterRegistry registry_;
+};
+
+TEST_F(PairScanTest, OneParameterAtATimeCannotSwitchThePairOn) {
+  std::vector<double> x{0.0, std::log(0.5)};
+  double best = heating_fitness(x);
+  ASSERT_EQ(best, 1.0);
+  detail::scan_effect_start(space(), {0, 1}, 9, heating_fitness, x, best);
+  // R_th's scan at C = 0.5 only adds the penalty (shape 0.075 < 0.2); C's scan at R_th = 0 is flat.
+  EXPECT_EQ(x[0], 0.0);
+  EXPECT_EQ(best, 1.0);
+}
+
+TEST_F(PairScanTest, TheGridOfThePairFindsWhereBothAct) {
+  std::vector<double> x{0.0, std::log(0.5)};
+  double best = heating_fitness(x);
+  int calls = 0;
+  detail::scan_effect_start(
+      space(), {0, 1}, 9,
+      [&](const std::vector<double>& trial) {
+        ++calls;
+        return heating_fitness(trial);
+      },
+      x, best, true);
+  EXPECT_EQ(calls, 81);
+  // C's grid is 0.01·2000^(k/8) J/K: k = 2 gives 0.067, k = 3 0.173; the nearer to 0.1 in log
+  // terms is k = 2 (ln(0.1/0.067) = 0.40 against ln(0.173/0.1) = 0.55).
+  const double c = std::exp(x[1]);
+  EXPECT_NEAR(c, 0.01 * std::pow(2000.0, 2.0 / 8.0), 1e-9);
+  EXPECT_EQ(x[0], 200.0);  // the largest R_th: e^(−10) of the way to fully on
+  EXPECT_NEAR(best, 1.0 - (1.0 - std::exp(-10.0)) * std::exp(-std::pow(std::log(c / 0.1), 2)),
+              1e-12);
+  EXPECT_LT(best, 0.2);
+  // A start already best is kept, as in the coordinate-wise scan.
+  std::vector<double> kept{200.0, std::log(0.1)};
+  double kept_best = heating_fitness(kept);
+  detail::scan_effect_start(space(), {0, 1}, 9, heating_fitness, kept, kept_best, true);
+  EXPECT_EQ(kept[1], std::log(0.1));
+}
+
 }  // namespace
 }  // namespace motoflex

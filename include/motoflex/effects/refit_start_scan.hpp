@@ -18,9 +18,16 @@ namespace motoflex::detail {
 // between the space's search bounds (so log-spaced where `log_scale`), the others held; a value
 // is kept only if `fitness(x)` falls below `best_fitness`, which is updated. Coordinates not
 // listed are left alone.
+//
+// With `pairs_jointly` and exactly two coordinates listed, the whole points × points grid of the
+// two instead (points² evaluations): a pair where one parameter switches the other on (winding
+// heating's thermal resistance and heat capacity: with R_th = 0 the capacity does nothing, and at
+// the neutral capacity no R_th heats within a log) has no coordinate-wise path to where both act.
+// The grid holds every point the coordinate-wise scan would try but the held value itself, which
+// is the start (`best_fitness`), so the grid's start is never worse.
 void scan_effect_start(const ParameterSpace& space, const std::vector<std::size_t>& indices,
                        std::size_t points,
                        const std::function<double(const std::vector<double>&)>& fitness,
-                       std::vector<double>& x, double& best_fitness);
+                       std::vector<double>& x, double& best_fitness, bool pairs_jointly = false);
 
 }  // namespace motoflex::detail

@@ -158,6 +158,10 @@ struct LoopOptions {
   // effect at all (a current limit far above any current) gives its signature a zero slope, and
   // the linearised start barely moves it; the scan finds where it starts to act.
   std::size_t refit_scan = 0;
+  // `refit: {scan_pairs: true}`: an effect with exactly two parameters is scanned on the whole
+  // scan × scan grid of the pair instead of one parameter at a time (refit_start_scan.hpp); for a
+  // pair where one parameter switches the other on (winding heating's R_th and C). Needs scan.
+  bool refit_scan_pairs = false;
   // Refit the current model alone in each iteration too (the control, `NN_control`), with the
   // same strategy, budget and polish as an effect's refit, started as one is: at the linearised
   // step of the model's own parameters (EffectRanking::fit_start). A refit can find a better
