@@ -83,6 +83,19 @@ SERVOS = {
                         held_out=lambda log: log.get("kp") == 400 and
                         log.get("trajectory") != "sin_time_square"),
 }
+# Two more shaped like the check in one respect the others lack: every gain trains, kp 400's
+# included (the check trains on all eleven logs), and one log per gain validates. Chosen
+# (2026-12-07) before their loops were run, to compare friction structures fitted with kp 400 in
+# training: a) kp 100 sin_time_square, kp 400 lift_and_drop, kp 800 sin_sin; b) kp 100 sin_sin,
+# kp 400 up_and_down, kp 800 up_and_down.
+for _key, _held in (("xl330_mixed_a", {(100, "sin_time_square"), (400, "lift_and_drop"),
+                                       (800, "sin_sin")}),
+                    ("xl330_mixed_b", {(100, "sin_sin"), (400, "up_and_down"),
+                                       (800, "up_and_down")})):
+    SERVOS[_key] = dict(
+        XL330, split="one log per gain validates (%s), the other 8 train (processed logs)" %
+        ", ".join("kp %d %s" % h for h in sorted(_held)),
+        held_out=lambda log, h=_held: (int(log.get("kp", 0)), log.get("trajectory")) in h)
 # The STS3250 has three logs we can hold out in turn (the fourth, sin_sin, is kept aside by the
 # data's curators): each split trains on two and validates on the third.
 STS3250 = {
