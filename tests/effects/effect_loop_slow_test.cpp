@@ -278,13 +278,8 @@ TEST(HiddenEffectLoopNao, FindsAddsAndFixesLinkFlexibility) {
 
 // Real logs: BAM's XL330 bench, kp 400 held out for validation as BAM does.
 TEST(RealServoLoop, BeatsTheCoulombViscousModelOnValidationLogs) {
-  const fs::path bam =
-      fs::path(MOTOFLEX_SOURCE_DIR) / ".." / "shared" / "data" / "bam" / "xl330" / "processed";
-  if (!fs::is_directory(bam)) {
-    std::printf("skipped: %s is absent (real BAM logs are not part of the repository)\n",
-                bam.string().c_str());
-    GTEST_SKIP() << "no BAM logs at " << bam;
-  }
+  const fs::path bam = bam_xl330_processed_or_empty();
+  if (bam.empty()) GTEST_SKIP() << "no BAM logs in ../shared/data/bam/xl330/processed";
   const fs::path dir = fresh_dir("loop_bam");
   fs::create_directories(dir / "train");
   fs::create_directories(dir / "validation");

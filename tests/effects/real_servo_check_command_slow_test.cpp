@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli/cli_test_support.hpp"
+#include "effect_test_support.hpp"
 #include "fit/fit_test_support.hpp"
 
 namespace motoflex::testing {
@@ -29,13 +30,8 @@ std::set<std::string> listing(const fs::path& folder) {
 }
 
 TEST(RealServoCheckCommand, TheBundledBaseFitConvergesOnEveryXl330Log) {
-  const fs::path bam =
-      fs::path(MOTOFLEX_SOURCE_DIR) / ".." / "shared" / "data" / "bam" / "xl330" / "processed";
-  if (!fs::is_directory(bam)) {
-    std::printf("skipped: %s is absent (real BAM logs are not part of the repository)\n",
-                bam.string().c_str());
-    GTEST_SKIP() << "no BAM logs at " << bam;
-  }
+  const fs::path bam = bam_xl330_processed_or_empty();
+  if (bam.empty()) GTEST_SKIP() << "no BAM logs in ../shared/data/bam/xl330/processed";
   const std::set<std::string> before = listing(bam);
   std::size_t logs = 0;
   for (const auto& name : before) logs += fs::path(name).extension() == ".json" ? 1 : 0;
