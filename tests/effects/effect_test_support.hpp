@@ -1,7 +1,8 @@
 #pragma once
 
 // Fit configs over reference_data/hidden/<effect>/ (bench logs with an undeclared effect) and
-// the truth those logs were recorded with (read only here, never by a fit).
+// the truth those logs were recorded with (read only here, never by a fit); and where the real
+// XL330 logs are, for the tests that skip without them.
 
 #include <cstdio>
 #include <filesystem>

@@ -23,8 +23,9 @@ namespace motoflex::detail {
 // two instead (points² evaluations): a pair where one parameter switches the other on (winding
 // heating's thermal resistance and heat capacity: with R_th = 0 the capacity does nothing, and at
 // the neutral capacity no R_th heats within a log) has no coordinate-wise path to where both act.
-// The grid holds every point the coordinate-wise scan would try but the held value itself, which
-// is the start (`best_fitness`), so the grid's start is never worse.
+// As in the coordinate-wise scan, the start is kept unless a grid point beats `best_fitness`, so
+// the scan never makes it worse. The grid is not a superset of the coordinate-wise scan, which
+// tries one parameter's values at the other's held value, not a grid point.
 void scan_effect_start(const ParameterSpace& space, const std::vector<std::size_t>& indices,
                        std::size_t points,
                        const std::function<double(const std::vector<double>&)>& fitness,
