@@ -134,7 +134,7 @@ std::string write_refit(const Evaluated& current, const RefitStart& candidate,
     }
     std::vector<double> x = space.start();
     const double before = start_fitness;
-    detail::scan_effect_start(
+    const bool grid = detail::scan_effect_start(
         space, indices, points,
         [&](const std::vector<double>& trial) {
           *start_rollouts += probe.train->cases().size();
@@ -145,7 +145,6 @@ std::string write_refit(const Evaluated& current, const RefitStart& candidate,
     for (const std::size_t i : indices) {
       estimate.emplace_back(space.free_parameters()[i].targets.front(), space.to_model(i, x[i]));
     }
-    const bool grid = current.fit.config.loop.refit_scan_pairs && indices.size() == 2;
     std::printf("loop:   %s: start scan (%zu points %s): training fitness %.4g -> %.4g\n",
                 effect.name.c_str(), points,
                 grid ? "on each side of the pair's grid" : "per parameter", before, start_fitness);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bam_data.hpp"
 #include "cli/cli_test_support.hpp"
 #include "effect_test_support.hpp"
 #include "fit/fit_test_support.hpp"
@@ -278,7 +279,7 @@ TEST(HiddenEffectLoopNao, FindsAddsAndFixesLinkFlexibility) {
 
 // Real logs: BAM's XL330 bench, kp 400 held out for validation as BAM does.
 TEST(RealServoLoop, BeatsTheCoulombViscousModelOnValidationLogs) {
-  const fs::path bam = bam_xl330_processed_or_empty();
+  const fs::path bam = bam_data_or_empty("xl330/processed");
   if (bam.empty()) GTEST_SKIP() << "no BAM logs in ../shared/data/bam/xl330/processed";
   const fs::path dir = fresh_dir("loop_bam");
   fs::create_directories(dir / "train");

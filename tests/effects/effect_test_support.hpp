@@ -1,10 +1,8 @@
 #pragma once
 
 // Fit configs over reference_data/hidden/<effect>/ (bench logs with an undeclared effect) and
-// the truth those logs were recorded with (read only here, never by a fit); and where the real
-// XL330 logs are, for the tests that skip without them.
+// the truth those logs were recorded with (read only here, never by a fit).
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -66,17 +64,6 @@ inline double noise_floor_deg(const FitConfig& config, const std::string& effect
   const ParameterSet truth =
       hidden_truth(effect, "validation/multisine_fast", config.space->base(), true);
   return evaluate_in_detail(*config.validation, truth).rms_deg;
-}
-
-// BAM's processed XL330 logs (../shared/data/bam/xl330/processed, not part of the repository), or
-// an empty path after printing why a test that needs them is skipped.
-inline std::filesystem::path bam_xl330_processed_or_empty() {
-  const std::filesystem::path bam = std::filesystem::path(MOTOFLEX_SOURCE_DIR) / ".." / "shared" /
-                                    "data" / "bam" / "xl330" / "processed";
-  if (std::filesystem::is_directory(bam)) return bam;
-  std::printf("skipped: %s is absent (real BAM logs are not part of the repository)\n",
-              bam.string().c_str());
-  return {};
 }
 
 }  // namespace motoflex::testing

@@ -12,8 +12,8 @@
 #include <set>
 #include <string>
 
+#include "bam_data.hpp"
 #include "cli/cli_test_support.hpp"
-#include "effect_test_support.hpp"
 #include "fit/fit_test_support.hpp"
 
 namespace motoflex::testing {
@@ -30,7 +30,7 @@ std::set<std::string> listing(const fs::path& folder) {
 }
 
 TEST(RealServoCheckCommand, TheBundledBaseFitConvergesOnEveryXl330Log) {
-  const fs::path bam = bam_xl330_processed_or_empty();
+  const fs::path bam = bam_data_or_empty("xl330/processed");
   if (bam.empty()) GTEST_SKIP() << "no BAM logs in ../shared/data/bam/xl330/processed";
   const std::set<std::string> before = listing(bam);
   std::size_t logs = 0;

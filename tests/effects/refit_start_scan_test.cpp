@@ -76,9 +76,10 @@ TEST_F(RefitStartScanTest, AStartAlreadyBestIsKept) {
 }
 
 // Winding heating's shape: the heat capacity C (coordinate 1, log) acts only when the thermal
-// resistance R_th (coordinate 0) is on, and at the start's C no R_th helps. Fitness 1 − e^(−R_th/
-// 20)·g(C), g = exp(−ln²(C/0.1)): best near R_th = 200, C = 0.1; at the start C = 0.5, g =
-// e^(−2.59) = 0.075, so R_th's best step gains < 0.075 and C's scan, done with R_th still 0, none.
+// resistance R_th (coordinate 0) is on, and at the start's C no R_th helps. Fitness 1 − on·g(C),
+// on = 1 − e^(−R_th/20), g = exp(−ln²(C/0.1)), plus 0.1·on where g < 0.2 (heating at a C that
+// does not fit costs): best near R_th = 200, C = 0.1. At the start's C = 0.5, g = e^(−2.59) =
+// 0.075, so every R_th > 0 is worse (+0.025·on) and C's scan, done with R_th still 0, is flat.
 double heating_fitness(const std::vector<double>& x) {
   const double rth = x[0];
   const double c = std::exp(x[1]);

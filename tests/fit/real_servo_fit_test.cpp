@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "bam_data.hpp"
 #include "fit_test_support.hpp"
 #include "motoflex/io/joint_log.hpp"
 
@@ -19,9 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(RealServoFitTest, Sts3250ConfigFitsTheRealLogsWithIntervals) {
-  const fs::path logs =
-      fs::path(MOTOFLEX_SOURCE_DIR) / ".." / "shared" / "data" / "bam" / "sts3250" / "raw";
-  if (!fs::is_directory(logs)) GTEST_SKIP() << "no BAM STS3250 logs at " << logs;
+  const fs::path logs = motoflex::testing::bam_data_or_empty("sts3250/raw");
+  if (logs.empty()) GTEST_SKIP() << "no BAM STS3250 logs in ../shared/data/bam/sts3250/raw";
   const fs::path dir = motoflex::testing::scratch_dir("real_servo_fit");
   fs::remove_all(dir);
   FitOverrides overrides;

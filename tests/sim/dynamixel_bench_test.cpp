@@ -13,6 +13,7 @@
 #include <numbers>
 #include <vector>
 
+#include "bam_data.hpp"
 #include "motoflex/io/bam_import.hpp"
 #include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/command_trajectory.hpp"
@@ -115,9 +116,8 @@ TEST(DynamixelBenchTest, DynamixelReproducesTheBenchLawsTrajectories) {
 }
 
 TEST(DynamixelBenchTest, RealXL330LogsAsWellAsTheBenchLaw) {
-  const fs::path dir =
-      fs::path(MOTOFLEX_SOURCE_DIR) / ".." / "shared" / "data" / "bam" / "xl330" / "processed";
-  if (!fs::is_directory(dir)) GTEST_SKIP() << "no BAM XL330 logs at " << dir;
+  const fs::path dir = testing::bam_data_or_empty("xl330/processed");
+  if (dir.empty()) GTEST_SKIP() << "no BAM XL330 logs in ../shared/data/bam/xl330/processed";
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (entry.path().extension() == ".json") files.push_back(entry.path());

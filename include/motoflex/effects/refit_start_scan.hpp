@@ -25,8 +25,9 @@ namespace motoflex::detail {
 // the neutral capacity no R_th heats within a log) has no coordinate-wise path to where both act.
 // As in the coordinate-wise scan, the start is kept unless a grid point beats `best_fitness`, so
 // the scan never makes it worse. The grid is not a superset of the coordinate-wise scan, which
-// tries one parameter's values at the other's held value, not a grid point.
-void scan_effect_start(const ParameterSpace& space, const std::vector<std::size_t>& indices,
+// tries one parameter's values at the other's held value, not a grid point. Returns whether it
+// scanned the pair's grid.
+bool scan_effect_start(const ParameterSpace& space, const std::vector<std::size_t>& indices,
                        std::size_t points,
                        const std::function<double(const std::vector<double>&)>& fitness,
                        std::vector<double>& x, double& best_fitness, bool pairs_jointly = false);
