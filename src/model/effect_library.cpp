@@ -36,6 +36,7 @@ const std::vector<Effect>& effect_library() {
       detail::torque_saturation_effect(),
       detail::housing_temperature_effect(),
       detail::servo_derivative_effect(),
+      detail::released_friction_effect(),
   };
   return library;
 }

@@ -114,6 +114,14 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   for (const auto& a : model.actuators) {
     add(joint_parameter(a, "mounting_offset", joint_units(a).position), 0.0, -0.1, 0.1);
   }
+  // Appended: a released joint's friction against the powered one's (released_friction.hpp, the
+  // effect released_friction); 0 is the powered friction. ±0.2 spans a small servo's Coulomb
+  // level and its viscous coefficient several times over.
+  for (const auto& a : model.actuators) {
+    const JointUnits units = joint_units(a);
+    add(joint_parameter(a, "released_friction_delta", units.effort), 0.0, -0.2, 0.2);
+    add(joint_parameter(a, "released_viscous_delta", units.damping), 0.0, -0.2, 0.2);
+  }
   append_servo_effect_specs(specs);
   return specs;
 }

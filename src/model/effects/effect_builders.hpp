@@ -49,5 +49,6 @@ Effect winding_heating_effect();
 Effect torque_saturation_effect();
 Effect housing_temperature_effect();
 Effect servo_derivative_effect();
+Effect released_friction_effect();
 
 }  // namespace motoflex::detail

@@ -6,6 +6,7 @@
 
 #include "motoflex/core/error.hpp"
 #include "motoflex/sim/actuator/friction_family.hpp"
+#include "motoflex/sim/actuator/released_friction.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
 #include "motoflex/sim/actuator/winding_heating.hpp"
 
@@ -14,10 +15,11 @@ namespace {
 
 class BenchServoLaw final : public ServoLaw {
  public:
-  BenchServoLaw(BenchServoParams params, FrictionParams friction, double drift_per_s,
-                bool logged_supply, WindingTemperature winding, double dt_s)
+  BenchServoLaw(BenchServoParams params, FrictionParams friction, FrictionParams released,
+                double drift_per_s, bool logged_supply, WindingTemperature winding, double dt_s)
       : params_(params),
         friction_(friction),
+        released_friction_(released),
         resistance_drift_per_s_(drift_per_s),
         logged_supply_(logged_supply),
         external_(friction_reads_external_torque(friction)),
@@ -43,7 +45,9 @@ class BenchServoLaw final : public ServoLaw {
     out.torque_nm = motor.torque_nm;
     // The winding heats with its current (none through a released bridge).
     winding_.advance(motor.current_a, bench.resistance_ohm);
-    out.row = joint_friction(friction_, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
+    // A released joint's own Coulomb and viscous levels (released_friction.hpp).
+    out.row = joint_friction(enabled ? friction_ : released_friction_, in.rate_rad_s, out.torque_nm,
+                             in.external_torque_nm);
     return out;
   }
   // BAM's M3–M6 load terms read the gravity torque of the arm (τ_e); M1, M2 and the motor-load
@@ -53,6 +57,7 @@ class BenchServoLaw final : public ServoLaw {
  private:
   BenchServoParams params_;
   FrictionParams friction_;
+  FrictionParams released_friction_;  // the H-bridge off (released_friction.hpp)
   double resistance_drift_per_s_;
   bool logged_supply_;
   bool external_;
@@ -73,6 +78,9 @@ std::vector<std::string> names(const RobotModel& model, std::size_t actuator) {
   // (bench.armature_kg_m2), so joint.<J>.armature_kg_m2 is not read.
   for (auto& name :
        friction_parameter_names(model.actuators[actuator].name, FrictionTerms::kFamily)) {
+    out.push_back(std::move(name));
+  }
+  for (auto& name : released_friction_parameter_names(model.actuators[actuator])) {
     out.push_back(std::move(name));
   }
   out.emplace_back("motor.R_drift_per_s");
@@ -118,15 +126,16 @@ std::unique_ptr<ServoLaw> create(const ServoLawSetup& setup) {
   // A PD firmware's derivative time (the effect servo_derivative; 0, the default: P only).
   bench.derivative_s = get("bench.derivative_s");
   if (!(bench.derivative_s >= 0.0)) throw ModelError("bench.derivative_s must not be negative");
-  const FrictionParams friction =
-      read_friction(get, setup.model.actuators[setup.actuator].name, FrictionTerms::kFamily);
+  const ActuatorSpec& joint = setup.model.actuators[setup.actuator];
+  const FrictionParams friction = read_friction(get, joint.name, FrictionTerms::kFamily);
+  const FrictionParams released = released_friction(friction, read_released_friction(get, joint));
   const double logged_supply = get("bench.logged_supply");
   if (logged_supply != 0.0 && logged_supply != 1.0) {
     throw ModelError("bench.logged_supply must be 0 (nominal bench.supply_v) or 1 (the log's)");
   }
   const WindingTemperature winding(
       {get("motor.winding_k_per_w"), get("motor.winding_heat_j_per_k")}, setup.dt_s);
-  return std::make_unique<BenchServoLaw>(bench, friction, get("motor.R_drift_per_s"),
+  return std::make_unique<BenchServoLaw>(bench, friction, released, get("motor.R_drift_per_s"),
                                          logged_supply == 1.0, winding, setup.dt_s);
 }
 

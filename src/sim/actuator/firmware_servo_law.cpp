@@ -7,6 +7,7 @@
 #include "motoflex/sim/actuator/friction_family.hpp"
 #include "motoflex/sim/actuator/h_bridge_motor.hpp"
 #include "motoflex/sim/actuator/position_firmware.hpp"
+#include "motoflex/sim/actuator/released_friction.hpp"
 #include "motoflex/sim/actuator/servo_stages.hpp"
 #include "motoflex/sim/actuator/winding_heating.hpp"
 
@@ -36,6 +37,7 @@ struct FirmwareServoParams {
   HBridgeMotorParams motor;
   double torque_off_s = 1.0e9;  // log time from which the H-bridge is released
   FrictionParams friction;
+  FrictionParams released_friction;  // the H-bridge off (released_friction.hpp)
   double armature_kg_m2 = 0.0;
   WindingHeatingParams winding;  // motor.winding_*: off at R_th = 0
 };
@@ -59,7 +61,8 @@ class FirmwareServoLaw final : public ServoLaw {
     // without heating), which then heats by this step's current.
     HBridgeMotorParams hot = params_.motor;
     if (winding_.heats()) hot.resistance_ohm *= winding_.resistance_factor();
-    if (in.elapsed_s - in.settle_s < params_.torque_off_s) {
+    const bool enabled = in.elapsed_s - in.settle_s < params_.torque_off_s;
+    if (enabled) {
       const double duty = firmware_.update(in.command_rad, in.angle_rad);
       const HBridgeMotorOutput motor = h_bridge_motor(hot, duty, in.rate_rad_s);
       out.torque_nm = motor.torque_nm;
@@ -69,7 +72,9 @@ class FirmwareServoLaw final : public ServoLaw {
       current_a_ = 0.0;
     }
     winding_.advance(current_a_, hot.resistance_ohm);
-    out.row = joint_friction(params_.friction, in.rate_rad_s, out.torque_nm, in.external_torque_nm);
+    // A released joint's own Coulomb and viscous levels (released_friction.hpp).
+    out.row = joint_friction(enabled ? params_.friction : params_.released_friction, in.rate_rad_s,
+                             out.torque_nm, in.external_torque_nm);
     // The back-EMF term −N²K_t²/R·θ̇ of the motor torque acts through the implicit damping row at
     // the end-of-step rate: explicitly it diverges on a light link (c·h/I > 2: c = 0.4 N·m·s/rad,
     // h = 1 ms, I < 2e-4 kg·m², a small arm's wrist). Inside a current limit or with the
@@ -100,6 +105,10 @@ std::vector<std::string> firmware_law_parameter_names(const RobotModel& model,
                                                       std::size_t actuator) {
   std::vector<std::string> names = scoped_law_parameter_names(
       model.actuators[actuator], {std::begin(kLeaves), std::end(kLeaves)});
+  // The released joint's friction (the effect released_friction).
+  for (auto& name : released_friction_parameter_names(model.actuators[actuator])) {
+    names.push_back(std::move(name));
+  }
   // The winding's Joule heating (the effect winding_heating), shared by the robot's servos of
   // this law as the bench law reads it.
   names.emplace_back("motor.winding_k_per_w");
@@ -136,6 +145,7 @@ std::unique_ptr<ServoLaw> create_firmware_law(const ServoLawSetup& setup) {
     throw ModelError(prefix + "gear_ratio must be positive, supply_v and current_limit_a >= 0");
   }
   p.friction = read_friction(setup.get, spec.name, FrictionTerms::kFamily);
+  p.released_friction = released_friction(p.friction, read_released_friction(setup.get, spec));
   p.armature_kg_m2 = read_armature(setup.get, spec);
   p.winding = {setup.get("motor.winding_k_per_w"), setup.get("motor.winding_heat_j_per_k")};
   p.motor.saturation_per_a = read_torque_saturation_per_a(setup.get);

@@ -1,0 +1,34 @@
+#include "motoflex/sim/actuator/released_friction.hpp"
+
+#include <algorithm>
+
+#include "motoflex/model/joint_units.hpp"
+
+namespace motoflex {
+
+std::vector<std::string> released_friction_parameter_names(const ActuatorSpec& joint) {
+  const JointUnits units = joint_units(joint);
+  return {joint_parameter(joint, "released_friction_delta", units.effort),
+          joint_parameter(joint, "released_viscous_delta", units.damping)};
+}
+
+ReleasedFrictionChange read_released_friction(const ParameterReader& get,
+                                              const ActuatorSpec& joint) {
+  const std::vector<std::string> names = released_friction_parameter_names(joint);
+  return {get(names[0]), get(names[1])};
+}
+
+FrictionParams released_friction(const FrictionParams& powered,
+                                 const ReleasedFrictionChange& change) {
+  FrictionParams released = powered;
+  if (change.coulomb_delta_nm != 0.0) {
+    released.coulomb_nm = std::max(0.0, powered.coulomb_nm + change.coulomb_delta_nm);
+  }
+  if (change.viscous_delta_nm_s_per_rad != 0.0) {
+    released.viscous_nm_s_per_rad =
+        std::max(0.0, powered.viscous_nm_s_per_rad + change.viscous_delta_nm_s_per_rad);
+  }
+  return released;
+}
+
+}  // namespace motoflex
