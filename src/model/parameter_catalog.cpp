@@ -16,6 +16,33 @@ void add_spec(std::vector<ParameterSpec>& specs, const std::string& name, double
   specs.push_back({name, unit_from_parameter_name(name), neutral, lower, upper});
 }
 
+// The per-joint effects appended after the robot-wide current limit, in this order.
+void append_joint_effect_specs(std::vector<ParameterSpec>& specs, const RobotModel& model) {
+  const auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
+    add_spec(specs, name, neutral, lower, upper);
+  };
+  // Appended: the gear's back-driving loss (friction_family.hpp, the effect backdrive_friction),
+  // per N·m of load torque; 1 would hold any load at standstill.
+  for (const auto& a : model.actuators) {
+    const std::string joint = "joint." + a.name + ".";
+    add(joint + "backdrive_friction", 0.0, 0.0, 1.0);
+    add(joint + "backdrive_friction_static", 0.0, 0.0, 1.0);
+  }
+  // Appended: the encoder's zero against the load's (the effect mounting_offset; BAM's q_offset
+  // bounds, ±0.1 rad).
+  for (const auto& a : model.actuators) {
+    add(joint_parameter(a, "mounting_offset", joint_units(a).position), 0.0, -0.1, 0.1);
+  }
+  // Appended: a released joint's friction against the powered one's (released_friction.hpp, the
+  // effect released_friction); 0 is the powered friction. ±0.2 spans a small servo's Coulomb
+  // level and its viscous coefficient several times over.
+  for (const auto& a : model.actuators) {
+    const JointUnits units = joint_units(a);
+    add(joint_parameter(a, "released_friction_delta", units.effort), 0.0, -0.2, 0.2);
+    add(joint_parameter(a, "released_viscous_delta", units.damping), 0.0, -0.2, 0.2);
+  }
+}
+
 // The robot-wide motor effects appended last (after every per-joint block above them).
 void append_servo_effect_specs(std::vector<ParameterSpec>& specs) {
   const auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
@@ -102,26 +129,7 @@ std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   // Appended: a driver's current limit (the bench's voltage servo; the effect current_limit):
   // 1e3 A never binds on a servo.
   add("motor.current_limit_a", 1.0e3, 0.05, 1.0e3);
-  // Appended: the gear's back-driving loss (friction_family.hpp, the effect backdrive_friction),
-  // per N·m of load torque; 1 would hold any load at standstill.
-  for (const auto& a : model.actuators) {
-    const std::string joint = "joint." + a.name + ".";
-    add(joint + "backdrive_friction", 0.0, 0.0, 1.0);
-    add(joint + "backdrive_friction_static", 0.0, 0.0, 1.0);
-  }
-  // Appended: the encoder's zero against the load's (the effect mounting_offset; BAM's q_offset
-  // bounds, ±0.1 rad).
-  for (const auto& a : model.actuators) {
-    add(joint_parameter(a, "mounting_offset", joint_units(a).position), 0.0, -0.1, 0.1);
-  }
-  // Appended: a released joint's friction against the powered one's (released_friction.hpp, the
-  // effect released_friction); 0 is the powered friction. ±0.2 spans a small servo's Coulomb
-  // level and its viscous coefficient several times over.
-  for (const auto& a : model.actuators) {
-    const JointUnits units = joint_units(a);
-    add(joint_parameter(a, "released_friction_delta", units.effort), 0.0, -0.2, 0.2);
-    add(joint_parameter(a, "released_viscous_delta", units.damping), 0.0, -0.2, 0.2);
-  }
+  append_joint_effect_specs(specs, model);
   append_servo_effect_specs(specs);
   return specs;
 }
