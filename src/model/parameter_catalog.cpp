@@ -16,11 +16,16 @@ void add_spec(std::vector<ParameterSpec>& specs, const std::string& name, double
   specs.push_back({name, unit_from_parameter_name(name), neutral, lower, upper});
 }
 
-// The per-joint effects appended after the robot-wide current limit, in this order.
-void append_joint_effect_specs(std::vector<ParameterSpec>& specs, const RobotModel& model) {
-  const auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
+// add(name, neutral, lower, upper) appending to `specs`.
+auto spec_adder(std::vector<ParameterSpec>& specs) {
+  return [&specs](const std::string& name, double neutral, double lower, double upper) {
     add_spec(specs, name, neutral, lower, upper);
   };
+}
+
+// The per-joint effects appended after the robot-wide current limit, in this order.
+void append_joint_effect_specs(std::vector<ParameterSpec>& specs, const RobotModel& model) {
+  const auto add = spec_adder(specs);
   // Appended: the gear's back-driving loss (friction_family.hpp, the effect backdrive_friction),
   // per N·m of load torque; 1 would hold any load at standstill.
   for (const auto& a : model.actuators) {
@@ -45,9 +50,7 @@ void append_joint_effect_specs(std::vector<ParameterSpec>& specs, const RobotMod
 
 // The robot-wide motor effects appended last (after every per-joint block above them).
 void append_servo_effect_specs(std::vector<ParameterSpec>& specs) {
-  const auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
-    add_spec(specs, name, neutral, lower, upper);
-  };
+  const auto add = spec_adder(specs);
   // The winding's Joule heating (the effect winding_heating; winding_heating.hpp): no heating at
   // R_th = 0; C a small servo's winding, about a gram of copper.
   add("motor.winding_k_per_w", 0.0, 0.0, 200.0);
@@ -70,9 +73,7 @@ void append_servo_effect_specs(std::vector<ParameterSpec>& specs) {
 
 std::vector<ParameterSpec> effect_parameter_specs(const RobotModel& model) {
   std::vector<ParameterSpec> specs;
-  const auto add = [&specs](const std::string& name, double neutral, double lower, double upper) {
-    add_spec(specs, name, neutral, lower, upper);
-  };
+  const auto add = spec_adder(specs);
   for (const auto& a : model.actuators) {
     // A prismatic joint's names end in m and N (same numbers: these are neutral switches;
     // a robot that fits them declares its own bounds).

@@ -19,9 +19,9 @@
 #include "motoflex/effects/effect_signature.hpp"
 #include "motoflex/fit/fit_config.hpp"
 #include "motoflex/model/parameters.hpp"
-#include "motoflex/model/robot_loader.hpp"
 #include "motoflex/motion/command_trajectory.hpp"
 #include "motoflex/sim/rollout.hpp"
+#include "sim/bench_stall_support.hpp"
 
 namespace motoflex::testing {
 namespace {
@@ -82,8 +82,7 @@ void record_lift_and_drop(const RobotModel& bench, const std::filesystem::path& 
 
 FitConfig released_arm_fit() {
   const std::filesystem::path dir = fresh_dir("released_friction_ranking");
-  const RobotModel bench = load_robot_model(
-      std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/robots/servo_pendulum", StructureOptions{});
+  const RobotModel bench = load_servo_pendulum();
   std::filesystem::create_directories(dir / "train");
   for (const int kp : {100, 400, 800}) record_lift_and_drop(bench, dir / "train", kp);
   write_text(dir / "fit.yaml",

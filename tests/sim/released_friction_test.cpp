@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "bench_stall_support.hpp"
 #include "motoflex/model/parameters.hpp"
-#include "motoflex/model/robot_loader.hpp"
 #include "motoflex/sim/actuator/released_friction.hpp"
 #include "one_joint_robot.hpp"
 
@@ -101,8 +101,7 @@ struct Extremes {
 };
 
 Extremes released_pendulum_extremes(double coulomb_delta_nm) {
-  const RobotModel bench = load_robot_model(
-      std::string(MOTOFLEX_SOURCE_DIR) + "/scenarios/robots/servo_pendulum", StructureOptions{});
+  const RobotModel bench = testing::load_servo_pendulum();
   ParameterSet p(bench.parameters);
   p.set("bench.logged_supply", 0.0);
   p.set("bench.torque_off_s", 1.5);
@@ -112,7 +111,7 @@ Extremes released_pendulum_extremes(double coulomb_delta_nm) {
   const testing::StepTrace trace = testing::run_steps(
       bench, p, "bench", 0.0, [](double) { return 0.4; }, 4.0, kDt_s);
   Extremes out;
-  out.mgl_nm = p.get("bench.mass_kg") * testing::kTestGravity_m_s2 * p.get("bench.length_m");
+  out.mgl_nm = testing::bench_gravity_torque_nm(p);
   // Swing extremes: the release (the arm held still), then where the rate changes sign (the
   // nearer sample to w = 0).
   EXPECT_LT(std::abs(trace.w_rad_s[1499]), 1e-4);

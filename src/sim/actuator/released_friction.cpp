@@ -20,14 +20,11 @@ ReleasedFrictionChange read_released_friction(const ParameterReader& get,
 
 FrictionParams released_friction(const FrictionParams& powered,
                                  const ReleasedFrictionChange& change) {
+  // read_friction keeps K_c, K_v >= 0, so a change of 0 returns them exactly.
   FrictionParams released = powered;
-  if (change.coulomb_delta_nm != 0.0) {
-    released.coulomb_nm = std::max(0.0, powered.coulomb_nm + change.coulomb_delta_nm);
-  }
-  if (change.viscous_delta_nm_s_per_rad != 0.0) {
-    released.viscous_nm_s_per_rad =
-        std::max(0.0, powered.viscous_nm_s_per_rad + change.viscous_delta_nm_s_per_rad);
-  }
+  released.coulomb_nm = std::max(0.0, powered.coulomb_nm + change.coulomb_delta_nm);
+  released.viscous_nm_s_per_rad =
+      std::max(0.0, powered.viscous_nm_s_per_rad + change.viscous_delta_nm_s_per_rad);
   return released;
 }
 
