@@ -11,7 +11,7 @@ lift_and_drop, sts3250_sin sin_time_square).
 Usage: report_real_servos.py [--binary build/motoflex] [--out runs/real_servos]
                              [--results benchmarks/real_servos] [--threads 2] [--scale 1.0]
                              [--servos xl330,xl330_traj,sts3250,...] [--models 1,2,3,4,5,6] [--no-loop]
-                             [--reuse-loops] [--merge]
+                             [--loop-seeds 1,2,3] [--reuse-loops] [--merge]
                              [--nao]   (also: nao_quick with and without LM)
 Writes RESULTS/real_servos.md and RESULTS/real_servos.json (git hash, date, budgets).
 """
@@ -218,10 +218,16 @@ def fit_row(binary, servo, model, train, val, work, threads, scale, polish=False
     return row
 
 
-def loop_row(binary, servo, train, val, work, threads, reuse=False):
+def loop_dir(work, seed):
+    """Where the loop of `seed` runs: WORK/loop for the config's own seed 1, else WORK/loop_sN."""
+    return os.path.join(work, "loop" if seed == 1 else "loop_s%d" % seed)
+
+
+def loop_row(binary, servo, train, val, work, threads, reuse=False, seed=1):
     """The loop's row: held-out MAE of its base fit and of its final model, and the same on the
-    training logs. `reuse`: read a finished loop in WORK/loop instead of running it again."""
-    out = os.path.join(work, "loop")
+    training logs. `reuse`: read a finished loop in WORK/loop instead of running it again.
+    `seed`: the loop's --seed (its base fit's, its refits' and its probes' random streams)."""
+    out = loop_dir(work, seed)
     config = os.path.join(ROOT, "scenarios", "fit", SERVOS[servo]["config"])
     summary = os.path.join(out, "loop.json")
     if reuse and os.path.exists(summary):
@@ -230,8 +236,8 @@ def loop_row(binary, servo, train, val, work, threads, reuse=False):
         shutil.rmtree(out, ignore_errors=True)
         start = time.monotonic()
         subprocess.run([binary, "loop", config, "--data", train, "--validation", val, "--out",
-                        out, "--threads", str(threads), "--force"], check=True,
-                       stdout=subprocess.DEVNULL)
+                        out, "--threads", str(threads), "--seed", str(seed), "--force"],
+                       check=True, stdout=subprocess.DEVNULL)
         seconds = time.monotonic() - start
     with open(summary) as f:
         loop = json.load(f)
@@ -250,8 +256,24 @@ def loop_row(binary, servo, train, val, work, threads, reuse=False):
         "val_mae_before_mrad": 1e3 * its[0]["val_mae_before_rad"] if its else None,
         "val_mae_mrad": 1e3 * its[-1]["val_mae_after_rad"] if its else None,
         "wall_seconds": seconds if seconds is not None else loop["wall_seconds"],
-        "bam_published_val_mae_mrad": None,
+        "bam_published_val_mae_mrad": None, "seed": seed,
     }
+
+
+def median(values):
+    ordered = sorted(values)
+    middle = len(ordered) // 2
+    return ordered[middle] if len(ordered) % 2 else 0.5 * (ordered[middle - 1] + ordered[middle])
+
+
+def seed_spread(rows):
+    """Per split with loops of more than one seed: [(servo, [(seed, held-out MAE)], median)]."""
+    by_servo = {}
+    for r in rows:
+        if row_key(r)[1] == "loop" and r.get("val_mae_mrad") is not None:
+            by_servo.setdefault(r["servo"], []).append((r.get("seed", 1), r["val_mae_mrad"]))
+    return [(servo, sorted(runs), median([v for _, v in runs]))
+            for servo, runs in by_servo.items() if len(runs) > 1]
 
 
 def nao_rows(binary, work, threads, generations=0, lm_iterations=10):
@@ -312,10 +334,22 @@ def markdown(rows, nao, args):
         train = number(r["train_mae_mrad"])
         if r.get("train_mae_before_mrad") is not None:
             train = "%.1f → %.1f" % (r["train_mae_before_mrad"], r["train_mae_mrad"])
+        seed = r.get("seed", 1)
         lines.append("| %s | %s | %s | %d | %s | %s | %s | %.0f | %s |" % (
-            r["servo"], r["model"], number(r["free"], "%d"), r["evaluations"],
+            r["servo"], r["model"] + (", seed %d" % seed if seed != 1 else ""),
+            number(r["free"], "%d"), r["evaluations"],
             train, held, number(r["bam_published_val_mae_mrad"]),
             r["wall_seconds"], r.get("date", FIRST_RUN_DATE)))
+    spread = seed_spread(rows)
+    if spread:
+        lines += ["", "The loop's held-out MAE (mrad) with other seeds (`--loop-seeds`; the "
+                  "config's own seed is 1), the same split, config and data:", "",
+                  "| servo (split) | held-out MAE per seed | median | range |", "|---|---|---|---|"]
+        for servo, runs, middle in spread:
+            values = [v for _, v in runs]
+            lines.append("| %s | %s | %.1f | %.1f-%.1f |" % (
+                servo, ", ".join("%.1f (seed %d)" % (v, s) for s, v in runs), middle,
+                min(values), max(values)))
     lines += ["", "Splits: " + "; ".join("%s: %s" % (k, v["split"]) for k, v in SERVOS.items())]
     if nao:
         lines += ["", "nao_quick (reference_data/nao, recorded from a known truth)%s:" % (
@@ -334,9 +368,9 @@ FIRST_RUN_DATE = "2026-11-25"
 
 
 def row_key(row):
-    """(servo, model) with every loop row one key, whatever effects it added."""
+    """(servo, model, seed) with every loop row of a seed one key, whatever effects it added."""
     model = "loop" if row["model"].startswith("motoflex loop") else row["model"]
-    return row["servo"], model
+    return row["servo"], model, row.get("seed", 1) if model == "loop" else 1
 
 
 def merged_rows(path, rows, nao):
@@ -362,10 +396,13 @@ def main():
     parser.add_argument("--models", default="1,2,3,4,5,6")
     parser.add_argument("--no-loop", action="store_true")
     parser.add_argument("--no-lm", action="store_true", help="skip the M1 + LM rows")
+    parser.add_argument("--loop-seeds", default="1",
+                        help="run the loop once per seed (WORK/loop, WORK/loop_s2, ...); the "
+                             "report adds the held-out MAE's median and range over them")
     parser.add_argument("--reuse-loops", action="store_true",
-                        help="read finished loops in OUT/<servo>/loop instead of running them again "
-                             "(their rows then get their training MAE, their wall time is the "
-                             "loop's own)")
+                        help="read finished loops in OUT/<servo>/loop (loop_sN for seed N) "
+                             "instead of running them again (their rows then get their training "
+                             "MAE, their wall time is the loop's own)")
     parser.add_argument("--merge", action="store_true",
                         help="replace only the rows run now in RESULTS/real_servos.json (each row "
                              "keeps its own date); the others stay as they were")
@@ -390,9 +427,9 @@ def main():
             rows.append(fit_row(args.binary, servo, 1, train, val, work, args.threads, args.scale,
                                 polish=True))
             print(rows[-1], flush=True)
-        if not args.no_loop:
+        for seed in [] if args.no_loop else [int(s) for s in args.loop_seeds.split(",") if s]:
             rows.append(loop_row(args.binary, servo, train, val, work, args.threads,
-                                 args.reuse_loops))
+                                 args.reuse_loops, seed))
             print(rows[-1], flush=True)
     nao = nao_rows(args.binary, args.out, args.threads, args.nao_generations,
                    args.nao_lm_iterations) if args.nao else []

@@ -55,5 +55,27 @@ class LoopRowTest(unittest.TestCase):
         self.assertEqual(row["evaluations"], 1234)
 
 
+class LoopSeedsTest(unittest.TestCase):
+    def test_a_seed_runs_in_its_own_folder_and_keys_its_own_row(self):
+        self.assertEqual(report_real_servos.loop_dir("w", 1), os.path.join("w", "loop"))
+        self.assertEqual(report_real_servos.loop_dir("w", 3), os.path.join("w", "loop_s3"))
+        stored = {"servo": "xl330_traj", "model": "motoflex loop (M1 + stribeck)"}  # no seed: 1
+        seed2 = {"servo": "xl330_traj", "model": "motoflex loop (M1 + load_friction)", "seed": 2}
+        self.assertEqual(report_real_servos.row_key(stored), ("xl330_traj", "loop", 1))
+        self.assertEqual(report_real_servos.row_key(seed2), ("xl330_traj", "loop", 2))
+        self.assertEqual(report_real_servos.row_key({"servo": "x", "model": "M3", "seed": 2}),
+                         ("x", "M3", 1))
+
+    def test_the_spread_lists_each_split_with_more_than_one_seed(self):
+        rows = [{"servo": "a", "model": "motoflex loop (M1)", "val_mae_mrad": 25.0},
+                {"servo": "a", "model": "motoflex loop (M1 + x)", "val_mae_mrad": 31.0, "seed": 3},
+                {"servo": "a", "model": "motoflex loop (M1 + y)", "val_mae_mrad": 22.0, "seed": 2},
+                {"servo": "a", "model": "M1", "val_mae_mrad": 60.0},
+                {"servo": "b", "model": "motoflex loop (M1)", "val_mae_mrad": 40.0}]
+        spread = report_real_servos.seed_spread(rows)
+        self.assertEqual(spread, [("a", [(1, 25.0), (2, 22.0), (3, 31.0)], 25.0)])
+        self.assertEqual(report_real_servos.median([4.0, 1.0, 3.0, 2.0]), 2.5)
+
+
 if __name__ == "__main__":
     unittest.main()
