@@ -320,9 +320,10 @@ def number(value, pattern="%.1f"):
 
 def markdown(rows, nao, args):
     lines = ["Real servo logs (../shared/data/bam), BAM's friction models fitted by `motoflex fit` "
-             "(CMA-ES, sigma 0.2, no restarts, seed 1, %d threads; budget 400 + 80 per free "
-             "parameter x %.2f), MAE in mrad. git %s. `scripts/report_real_servos.py` (each row "
-             "dated: `--merge` re-runs some rows and keeps the others)." %
+             "(CMA-ES, sigma 0.2, no restarts, seed 1, %d thread(s) in the last run; budget "
+             "400 + 80 per free parameter x %.2f), MAE in mrad. git %s. "
+             "`scripts/report_real_servos.py` (each row dated: `--merge` re-runs some rows and "
+             "keeps the others)." %
              (args.threads, args.scale, git_hash()), "",
              "| servo (split) | model | free | evaluations | train MAE | held-out MAE | "
              "BAM published held-out | wall (s) | measured |",

@@ -131,9 +131,10 @@ struct LoopOptions {
   // terms (refit_candidates.hpp); 0 = stop at the first round.
   std::size_t widen = 0;
   std::size_t max_iterations = 3;  // effects added at most
-  // A candidate is added only if it lowers the validation RMS (over the fitness's channels:
-  // the joints, and the IMU when it is scored) by at least this fraction and its validation
-  // BIC (n·ln MSE + k·ln n, over the same channels) beats the current model's.
+  // A candidate is added only if it lowers the validation error as the fit measures it (over
+  // the fitness's channels: the joints, and the IMU when it is scored; RMS for squared errors,
+  // the mean |e| with `error: absolute`, ErrorSummary::fit_error_rad) by at least this fraction
+  // and its validation BIC (over the same channels and error) beats the current model's.
   double min_gain = 0.05;
   std::vector<std::string> effects;  // candidates considered (empty: the whole library)
   // When no library effect helps: discover at most this many candidate torque terms by sparse
