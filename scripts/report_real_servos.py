@@ -23,6 +23,7 @@ import shutil
 import subprocess
 import sys
 import time
+from statistics import median
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BAM = os.path.join(ROOT, "..", "shared", "data", "bam")
@@ -225,7 +226,8 @@ def loop_dir(work, seed):
 
 def loop_row(binary, servo, train, val, work, threads, reuse=False, seed=1):
     """The loop's row: held-out MAE of its base fit and of its final model, and the same on the
-    training logs. `reuse`: read a finished loop in WORK/loop instead of running it again.
+    training logs. `reuse`: read a finished loop in loop_dir(WORK, seed) instead of running it
+    again.
     `seed`: the loop's --seed (its base fit's, its refits' and its probes' random streams)."""
     out = loop_dir(work, seed)
     config = os.path.join(ROOT, "scenarios", "fit", SERVOS[servo]["config"])
@@ -258,12 +260,6 @@ def loop_row(binary, servo, train, val, work, threads, reuse=False, seed=1):
         "wall_seconds": seconds if seconds is not None else loop["wall_seconds"],
         "bam_published_val_mae_mrad": None, "seed": seed,
     }
-
-
-def median(values):
-    ordered = sorted(values)
-    middle = len(ordered) // 2
-    return ordered[middle] if len(ordered) % 2 else 0.5 * (ordered[middle - 1] + ordered[middle])
 
 
 def seed_spread(rows):
