@@ -257,19 +257,51 @@ def loop_row(binary, servo, train, val, work, threads, reuse=False, seed=1):
         "train_mae_mrad": train_mae(loop["final_run_dir"]),
         "val_mae_before_mrad": 1e3 * its[0]["val_mae_before_rad"] if its else None,
         "val_mae_mrad": 1e3 * its[-1]["val_mae_after_rad"] if its else None,
-        "wall_seconds": seconds if seconds is not None else loop["wall_seconds"],
+        "wall_seconds": seconds if seconds is not None else loop_seconds(loop),
         "bam_published_val_mae_mrad": None, "seed": seed,
+        "candidates": loop_candidates(loop),
     }
 
 
+def loop_seconds(loop):
+    """A finished loop's time: the sum of its fits' own times (a loop resumed in its folder
+    reports the wall clock of its last session only, and reuses the fits it finds there),
+    or its wall clock where loop.json has no fit time."""
+    return loop.get("fit_seconds", loop["wall_seconds"])
+
+
+# Loops run before loop.json recorded its options (2026-12-07) all refit five candidates.
+CANDIDATES_BEFORE_OPTIONS = 5
+
+
+def loop_candidates(loop):
+    """How many ranked effects each round of `loop` (its loop.json) refit."""
+    return loop.get("options", {}).get("candidates", CANDIDATES_BEFORE_OPTIONS)
+
+
+def loop_label(row):
+    """A loop row's model column: its effects, then its seed and candidates where not the usual."""
+    label = row["model"]
+    if row.get("seed", 1) != 1:
+        label += ", seed %d" % row["seed"]
+    if row.get("candidates", CANDIDATES_BEFORE_OPTIONS) != CANDIDATES_BEFORE_OPTIONS:
+        label += ", %d candidates" % row["candidates"]
+    return label
+
+
 def seed_spread(rows):
-    """Per split with loops of more than one seed: [(servo, [(seed, held-out MAE)], median)]."""
-    by_servo = {}
+    """Per split with more than one loop (other seeds, or another candidates count), per
+    candidates count: [(servo, candidates, [(seed, held-out MAE)], median)]."""
+    groups = {}
     for r in rows:
         if row_key(r)[1] == "loop" and r.get("val_mae_mrad") is not None:
-            by_servo.setdefault(r["servo"], []).append((r.get("seed", 1), r["val_mae_mrad"]))
-    return [(servo, sorted(runs), median([v for _, v in runs]))
-            for servo, runs in by_servo.items() if len(runs) > 1]
+            group = (r["servo"], r.get("candidates", CANDIDATES_BEFORE_OPTIONS))
+            groups.setdefault(group, []).append((r.get("seed", 1), r["val_mae_mrad"]))
+    loops = {}
+    for (servo, _), runs in groups.items():
+        loops[servo] = loops.get(servo, 0) + len(runs)
+    return [(servo, candidates, sorted(runs), median([v for _, v in runs]))
+            for (servo, candidates), runs in groups.items() if loops[servo] > 1]
 
 
 def nao_rows(binary, work, threads, generations=0, lm_iterations=10):
@@ -331,22 +363,25 @@ def markdown(rows, nao, args):
         train = number(r["train_mae_mrad"])
         if r.get("train_mae_before_mrad") is not None:
             train = "%.1f → %.1f" % (r["train_mae_before_mrad"], r["train_mae_mrad"])
-        seed = r.get("seed", 1)
         lines.append("| %s | %s | %s | %d | %s | %s | %s | %.0f | %s |" % (
-            r["servo"], r["model"] + (", seed %d" % seed if seed != 1 else ""),
+            r["servo"], loop_label(r) if row_key(r)[1] == "loop" else r["model"],
             number(r["free"], "%d"), r["evaluations"],
             train, held, number(r["bam_published_val_mae_mrad"]),
             r["wall_seconds"], r.get("date", FIRST_RUN_DATE)))
     spread = seed_spread(rows)
     if spread:
         lines += ["", "The loop's held-out MAE (mrad) with other seeds (`--loop-seeds`; the "
-                  "config's own seed is 1), the same split, config and data:", "",
-                  "| servo (split) | held-out MAE per seed | median | range |", "|---|---|---|---|"]
-        for servo, runs, middle in spread:
+                  "config's own seed is 1) or candidates counts, the same split and data; "
+                  "candidates: the ranked effects each round refits (`loop: candidates:`, from "
+                  "the loop's loop.json):", "",
+                  "| servo (split) | candidates | held-out MAE per seed | median | range |",
+                  "|---|---|---|---|---|"]
+        for servo, candidates, runs, middle in spread:
             values = [v for _, v in runs]
-            lines.append("| %s | %s | %.1f | %.1f-%.1f |" % (
-                servo, ", ".join("%.1f (seed %d)" % (v, s) for s, v in runs), middle,
-                min(values), max(values)))
+            lines.append("| %s | %d | %s | %s | %s |" % (
+                servo, candidates, ", ".join("%.1f (seed %d)" % (v, s) for s, v in runs),
+                "%.1f" % middle if len(runs) > 1 else "-",
+                "%.1f-%.1f" % (min(values), max(values)) if len(runs) > 1 else "-"))
     lines += ["", "Splits: " + "; ".join("%s: %s" % (k, v["split"]) for k, v in SERVOS.items())]
     if nao:
         lines += ["", "nao_quick (reference_data/nao, recorded from a known truth)%s:" % (
@@ -365,9 +400,13 @@ FIRST_RUN_DATE = "2026-11-25"
 
 
 def row_key(row):
-    """(servo, model, seed) with every loop row of a seed one key, whatever effects it added."""
+    """(servo, model, seed, candidates) with every loop row of a seed and candidates count one
+    key, whatever effects it added."""
     model = "loop" if row["model"].startswith("motoflex loop") else row["model"]
-    return row["servo"], model, row.get("seed", 1) if model == "loop" else 1
+    if model != "loop":
+        return row["servo"], model, 1, None
+    return row["servo"], model, row.get("seed", 1), row.get("candidates",
+                                                            CANDIDATES_BEFORE_OPTIONS)
 
 
 def merged_rows(path, rows, nao):
@@ -399,7 +438,7 @@ def main():
     parser.add_argument("--reuse-loops", action="store_true",
                         help="read finished loops in OUT/<servo>/loop (loop_sN for seed N) "
                              "instead of running them again (their rows then get their training "
-                             "MAE, their wall time is the loop's own)")
+                             "MAE; their time is the sum of their fits' own times)")
     parser.add_argument("--merge", action="store_true",
                         help="replace only the rows run now in RESULTS/real_servos.json (each row "
                              "keeps its own date); the others stay as they were")

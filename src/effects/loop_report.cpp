@@ -192,6 +192,16 @@ nlohmann::ordered_json iteration_json(const LoopIteration& it) {
 nlohmann::ordered_json loop_json(const LoopResult& result, const FitConfig& user) {
   nlohmann::ordered_json loop;
   loop["fit"] = user.path;
+  // The options that decide its path, as run (the config file may change after it): a report
+  // comparing loops reads them here (scripts/report_real_servos.py).
+  const LoopOptions& options = user.loop;
+  loop["options"] = {{"seed", user.seed},
+                     {"candidates", options.candidates},
+                     {"widen", options.widen},
+                     {"max_iterations", options.max_iterations},
+                     {"min_gain", options.min_gain},
+                     {"discover_terms", options.discover_terms},
+                     {"refit_evaluations", options.refit_budget.max_evaluations}};
   loop["base_model"] = result.base_model;
   loop["iterations"] = nlohmann::ordered_json::array();
   for (const LoopIteration& it : result.iterations)

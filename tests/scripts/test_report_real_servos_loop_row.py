@@ -53,6 +53,24 @@ class LoopRowTest(unittest.TestCase):
         self.assertEqual(row["model"], "motoflex loop (M1 + load_friction + stribeck)")
         self.assertEqual(row["wall_seconds"], 56.0)  # the loop's own, since nothing ran now
         self.assertEqual(row["evaluations"], 1234)
+        # A loop.json without its options was run before they were recorded: five candidates.
+        self.assertEqual(row["candidates"], 5)
+
+    def test_a_reused_loop_takes_its_fits_own_times(self):
+        # Resumed in its folder, a loop's wall clock is its last session's (50 s for a loop
+        # whose fits took 2971 s); the fits' own seconds are the run's.
+        self.assertEqual(report_real_servos.loop_seconds(
+            {"wall_seconds": 50.0, "fit_seconds": 2971.0}), 2971.0)
+        self.assertEqual(report_real_servos.loop_seconds({"wall_seconds": 56.0}), 56.0)
+
+    def test_the_candidates_come_from_the_options_the_loop_ran_with(self):
+        self.assertEqual(report_real_servos.loop_candidates({"options": {"candidates": 10}}), 10)
+        self.assertEqual(report_real_servos.loop_candidates({"iterations": []}), 5)
+        row = {"model": "motoflex loop (M1 + x)", "seed": 2, "candidates": 10}
+        self.assertEqual(report_real_servos.loop_label(row),
+                         "motoflex loop (M1 + x), seed 2, 10 candidates")
+        self.assertEqual(report_real_servos.loop_label({"model": "motoflex loop (M1)"}),
+                         "motoflex loop (M1)")
 
 
 class LoopSeedsTest(unittest.TestCase):
@@ -61,19 +79,33 @@ class LoopSeedsTest(unittest.TestCase):
         self.assertEqual(report_real_servos.loop_dir("w", 3), os.path.join("w", "loop_s3"))
         stored = {"servo": "xl330_traj", "model": "motoflex loop (M1 + stribeck)"}  # no seed: 1
         seed2 = {"servo": "xl330_traj", "model": "motoflex loop (M1 + load_friction)", "seed": 2}
-        self.assertEqual(report_real_servos.row_key(stored), ("xl330_traj", "loop", 1))
-        self.assertEqual(report_real_servos.row_key(seed2), ("xl330_traj", "loop", 2))
+        self.assertEqual(report_real_servos.row_key(stored), ("xl330_traj", "loop", 1, 5))
+        self.assertEqual(report_real_servos.row_key(seed2), ("xl330_traj", "loop", 2, 5))
+        # The same seed with another candidates count is a row of its own (--merge keeps both).
+        self.assertEqual(report_real_servos.row_key(dict(seed2, candidates=10)),
+                         ("xl330_traj", "loop", 2, 10))
         self.assertEqual(report_real_servos.row_key({"servo": "x", "model": "M3", "seed": 2}),
-                         ("x", "M3", 1))
+                         ("x", "M3", 1, None))
 
     def test_the_spread_lists_each_split_with_more_than_one_seed(self):
         rows = [{"servo": "a", "model": "motoflex loop (M1)", "val_mae_mrad": 25.0},
                 {"servo": "a", "model": "motoflex loop (M1 + x)", "val_mae_mrad": 31.0, "seed": 3},
                 {"servo": "a", "model": "motoflex loop (M1 + y)", "val_mae_mrad": 22.0, "seed": 2},
                 {"servo": "a", "model": "M1", "val_mae_mrad": 60.0},
-                {"servo": "b", "model": "motoflex loop (M1)", "val_mae_mrad": 40.0}]
+                {"servo": "b", "model": "motoflex loop (M1)", "val_mae_mrad": 40.0},
+                {"servo": "a", "model": "motoflex loop (M1 + z)", "val_mae_mrad": 20.0,
+                 "seed": 2, "candidates": 10},
+                {"servo": "a", "model": "motoflex loop (M1 + w)", "val_mae_mrad": 24.0,
+                 "candidates": 10}]
+        rows += [{"servo": "c", "model": "motoflex loop (M1)", "val_mae_mrad": 48.0, "seed": 2},
+                 {"servo": "c", "model": "motoflex loop (M1 + x)", "val_mae_mrad": 26.0,
+                  "seed": 2, "candidates": 10}]
         spread = report_real_servos.seed_spread(rows)
-        self.assertEqual(spread, [("a", [(1, 25.0), (2, 22.0), (3, 31.0)], 25.0)])
+        # Each candidates count is a spread of its own; a split with one loop per count is
+        # listed too (one seed rerun with another count), one with a single loop is not.
+        self.assertEqual(spread, [("a", 5, [(1, 25.0), (2, 22.0), (3, 31.0)], 25.0),
+                                  ("a", 10, [(1, 24.0), (2, 20.0)], 22.0),
+                                  ("c", 5, [(2, 48.0)], 48.0), ("c", 10, [(2, 26.0)], 26.0)])
         self.assertEqual(report_real_servos.median([4.0, 1.0, 3.0, 2.0]), 2.5)
 
 
