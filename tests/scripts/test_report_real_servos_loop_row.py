@@ -87,7 +87,7 @@ class LoopSeedsTest(unittest.TestCase):
         self.assertEqual(report_real_servos.row_key({"servo": "x", "model": "M3", "seed": 2}),
                          ("x", "M3", 1, None))
 
-    def test_the_spread_lists_each_split_with_more_than_one_seed(self):
+    def test_the_spread_lists_each_split_with_more_than_one_loop(self):
         rows = [{"servo": "a", "model": "motoflex loop (M1)", "val_mae_mrad": 25.0},
                 {"servo": "a", "model": "motoflex loop (M1 + x)", "val_mae_mrad": 31.0, "seed": 3},
                 {"servo": "a", "model": "motoflex loop (M1 + y)", "val_mae_mrad": 22.0, "seed": 2},
