@@ -23,6 +23,7 @@ import shutil
 import subprocess
 import sys
 import time
+from collections import Counter
 from statistics import median
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -281,11 +282,12 @@ def loop_candidates(loop):
 
 def loop_label(row):
     """A loop row's model column: its effects, then its seed and candidates where not the usual."""
+    _, _, seed, candidates = row_key(row)
     label = row["model"]
-    if row.get("seed", 1) != 1:
-        label += ", seed %d" % row["seed"]
-    if row.get("candidates", CANDIDATES_BEFORE_OPTIONS) != CANDIDATES_BEFORE_OPTIONS:
-        label += ", %d candidates" % row["candidates"]
+    if seed != 1:
+        label += ", seed %d" % seed
+    if candidates != CANDIDATES_BEFORE_OPTIONS:
+        label += ", %d candidates" % candidates
     return label
 
 
@@ -294,12 +296,12 @@ def seed_spread(rows):
     candidates count: [(servo, candidates, [(seed, held-out MAE)], median)]."""
     groups = {}
     for r in rows:
-        if row_key(r)[1] == "loop" and r.get("val_mae_mrad") is not None:
-            group = (r["servo"], r.get("candidates", CANDIDATES_BEFORE_OPTIONS))
-            groups.setdefault(group, []).append((r.get("seed", 1), r["val_mae_mrad"]))
-    loops = {}
+        servo, model, seed, candidates = row_key(r)
+        if model == "loop" and r.get("val_mae_mrad") is not None:
+            groups.setdefault((servo, candidates), []).append((seed, r["val_mae_mrad"]))
+    loops = Counter()
     for (servo, _), runs in groups.items():
-        loops[servo] = loops.get(servo, 0) + len(runs)
+        loops[servo] += len(runs)
     return [(servo, candidates, sorted(runs), median([v for _, v in runs]))
             for (servo, candidates), runs in groups.items() if loops[servo] > 1]
 

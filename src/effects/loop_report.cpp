@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "motoflex/core/atomic_file.hpp"
+#include "motoflex/fit/fit_config.hpp"
 #include "motoflex/fit/fit_run.hpp"
 #include "motoflex/io/plot_script.hpp"
 #include "motoflex/model/effect_library.hpp"
@@ -192,16 +193,11 @@ nlohmann::ordered_json iteration_json(const LoopIteration& it) {
 nlohmann::ordered_json loop_json(const LoopResult& result, const FitConfig& user) {
   nlohmann::ordered_json loop;
   loop["fit"] = user.path;
-  // The options that decide its path, as run (the config file may change after it): a report
-  // comparing loops reads them here (scripts/report_real_servos.py).
-  const LoopOptions& options = user.loop;
-  loop["options"] = {{"seed", user.seed},
-                     {"candidates", options.candidates},
-                     {"widen", options.widen},
-                     {"max_iterations", options.max_iterations},
-                     {"min_gain", options.min_gain},
-                     {"discover_terms", options.discover_terms},
-                     {"refit_evaluations", options.refit_budget.max_evaluations}};
+  // The options that decide its path, as run (the config file may change after it): its
+  // `loop:` section as the spec writer gives it (the section loop_identity.json hashes) and
+  // its seed. A report comparing loops reads them here (scripts/report_real_servos.py).
+  loop["options"] = fit_spec_to_json(user)["loop"];
+  loop["options"]["seed"] = user.seed;
   loop["base_model"] = result.base_model;
   loop["iterations"] = nlohmann::ordered_json::array();
   for (const LoopIteration& it : result.iterations)

@@ -61,7 +61,7 @@ TEST_P(HiddenEffectLoop, FindsAddsAndFixesTheEffect) {
   // The options it ran with (kOneStep, the config's seed), whatever the config file says later.
   EXPECT_EQ(loop["options"]["candidates"], 2);
   EXPECT_EQ(loop["options"]["max_iterations"], 1);
-  EXPECT_EQ(loop["options"]["refit_evaluations"], 240);
+  EXPECT_EQ(loop["options"]["refit"]["budget"]["evaluations"], 240);
   EXPECT_EQ(loop["options"]["seed"], 1);
   // A bench has no torso IMU: its zero IMU columns are matched exactly and not reported.
   EXPECT_EQ(read_text(dir / "run" / "report.md").find("Torso IMU"), std::string::npos);

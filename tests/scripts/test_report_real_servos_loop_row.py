@@ -66,10 +66,11 @@ class LoopRowTest(unittest.TestCase):
     def test_the_candidates_come_from_the_options_the_loop_ran_with(self):
         self.assertEqual(report_real_servos.loop_candidates({"options": {"candidates": 10}}), 10)
         self.assertEqual(report_real_servos.loop_candidates({"iterations": []}), 5)
-        row = {"model": "motoflex loop (M1 + x)", "seed": 2, "candidates": 10}
+        row = {"servo": "a", "model": "motoflex loop (M1 + x)", "seed": 2, "candidates": 10}
         self.assertEqual(report_real_servos.loop_label(row),
                          "motoflex loop (M1 + x), seed 2, 10 candidates")
-        self.assertEqual(report_real_servos.loop_label({"model": "motoflex loop (M1)"}),
+        self.assertEqual(report_real_servos.loop_label({"servo": "a",
+                                                        "model": "motoflex loop (M1)"}),
                          "motoflex loop (M1)")
 
 
