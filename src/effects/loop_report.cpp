@@ -196,7 +196,7 @@ nlohmann::ordered_json loop_json(const LoopResult& result, const FitConfig& user
   // The options that decide its path, as run (the config file may change after it): its
   // `loop:` section as the spec writer gives it (the section loop_identity.json hashes) and
   // its seed. A report comparing loops reads them here (scripts/report_real_servos.py).
-  loop["options"] = fit_spec_to_json(user)["loop"];
+  loop["options"] = loop_options_to_json(user.loop);
   loop["options"]["seed"] = user.seed;
   loop["base_model"] = result.base_model;
   loop["iterations"] = nlohmann::ordered_json::array();

@@ -98,6 +98,27 @@ FitOverrides overrides_from_json(const nlohmann::json& j) {
   return o;
 }
 
+nlohmann::ordered_json loop_options_to_json(const LoopOptions& options) {
+  nlohmann::ordered_json loop = {{"candidates", options.candidates},
+                                 {"widen", options.widen},
+                                 {"max_iterations", options.max_iterations},
+                                 {"min_gain", options.min_gain},
+                                 {"effects", options.effects},
+                                 {"discover_terms", options.discover_terms},
+                                 {"discover_always", options.discover_always},
+                                 {"discover_screen", options.discover_screen},
+                                 {"control", options.control},
+                                 {"refit",
+                                  {{"strategy", strategy_to_json(options.refit_strategy)},
+                                   {"budget", budget_json(options.refit_budget)}}}};
+  if (!options.refit_polish.method.empty()) {
+    loop["refit"]["polish"] = polish_to_json(options.refit_polish);
+  }
+  if (options.refit_scan > 0) loop["refit"]["scan"] = options.refit_scan;
+  if (options.refit_scan_pairs) loop["refit"]["scan_pairs"] = true;
+  return loop;
+}
+
 nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
   nlohmann::ordered_json fit;
   fit["name"] = spec.name;
@@ -132,23 +153,7 @@ nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec) {
   fit["budget"] = budget_json(spec.budget);
   if (!spec.polish.method.empty()) fit["polish"] = polish_to_json(spec.polish);
   if (spec.hold_identified) fit["hold_identified"] = true;
-  fit["loop"] = {{"candidates", spec.loop.candidates},
-                 {"widen", spec.loop.widen},
-                 {"max_iterations", spec.loop.max_iterations},
-                 {"min_gain", spec.loop.min_gain},
-                 {"effects", spec.loop.effects},
-                 {"discover_terms", spec.loop.discover_terms},
-                 {"discover_always", spec.loop.discover_always},
-                 {"discover_screen", spec.loop.discover_screen},
-                 {"control", spec.loop.control},
-                 {"refit",
-                  {{"strategy", strategy_to_json(spec.loop.refit_strategy)},
-                   {"budget", budget_json(spec.loop.refit_budget)}}}};
-  if (!spec.loop.refit_polish.method.empty()) {
-    fit["loop"]["refit"]["polish"] = polish_to_json(spec.loop.refit_polish);
-  }
-  if (spec.loop.refit_scan > 0) fit["loop"]["refit"]["scan"] = spec.loop.refit_scan;
-  if (spec.loop.refit_scan_pairs) fit["loop"]["refit"]["scan_pairs"] = true;
+  fit["loop"] = loop_options_to_json(spec.loop);
   fit["threads"] = spec.threads;
   fit["seed"] = spec.seed;
   fit["out"] = spec.out_dir;

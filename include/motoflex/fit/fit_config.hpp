@@ -58,6 +58,8 @@ nlohmann::ordered_json strategy_to_json(const StrategyConfig& strategy);
 nlohmann::ordered_json polish_to_json(const PolishSpec& polish);
 // A spec as fit.yaml reads it back (JSON is valid YAML), paths absolute.
 nlohmann::ordered_json fit_spec_to_json(const FitSpec& spec);
+// The `loop:` section alone, as fit_spec_to_json writes it.
+nlohmann::ordered_json loop_options_to_json(const LoopOptions& options);
 
 // The identity of a resolved config (see FitConfig::identity).
 nlohmann::json fit_identity(const FitConfig& config);
